@@ -1,0 +1,47 @@
+# bsched: the verified B-scheduler and the RoboCube reference firmware.
+#   make         build everything host-side (library, bsched-plan, unit tests)
+#   make check   every test and proof; ends with 'N passed, N failed'
+#   make run     the reference firmware on the emulated RoboCube
+# Each part of the tree adds its rules in its own fragment (*.mk) and its
+# suites to CHECKS; ci/run-checks runs them as 'make check-SUITE'.
+
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+ROOT  := $(abspath .)
+BUILD := $(ROOT)/build
+export BSCHED_TOOLS ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/bsched
+SETUP := $(ROOT)/ci/setup
+RESULTS := $(BUILD)/results
+PYTHON := $(BSCHED_TOOLS)/venv/bin/python
+# Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
+record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
+
+HOST_CC     ?= cc
+HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
+
+ALL     :=
+CHECKS  :=
+
+include bsched/bsched.mk
+-include $(sort $(wildcard bsched/proofs/*/*.mk))
+-include $(sort $(wildcard kernel/*.mk drivers/*.mk net/*.mk pdl/*.mk emu/*.mk firmware/*.mk))
+
+.PHONY: all check setup run clean
+all: $(ALL)
+
+setup:
+	$(SETUP)
+
+check:
+	@$(SETUP)
+	@ci/run-checks $(CHECKS)
+
+# Replaced by the firmware fragment once the emulated board exists.
+ifndef RUN_DEFINED
+run:
+	@echo "make run: the reference firmware and the RoboCube emulator are not built yet."
+	@echo "It will build build/firmware/robocube.elf and boot it with qemu-system-m68k -M robocube."
+endif
+
+clean:
+	rm -rf $(BUILD)
