@@ -7,9 +7,16 @@
  */
 #include "bsched.h"
 
-/* The low `bits` bits of x in reverse order (Fig. 6's reverse()). */
+/* The low `bits` bits of x in reverse order (Fig. 6's reverse()).
+ * BSCHED_MUTANT_NO_REVERSE builds a deliberately wrong variant (identity
+ * instead of reversal) for the negative checks of the proof jobs: the
+ * schedule stays periodic per class but is no longer balanced. */
 static uint32_t reverse_bits(uint32_t x, uint32_t bits)
 {
+#ifdef BSCHED_MUTANT_NO_REVERSE
+    (void)bits;
+    return x;
+#else
     uint32_t reversed = 0u;
     uint32_t rest = x;
     uint32_t b;
@@ -18,6 +25,7 @@ static uint32_t reverse_bits(uint32_t x, uint32_t bits)
         rest = rest / 2u;
     }
     return reversed;
+#endif
 }
 
 /* 2^pv as the period of a class, pv <= BSCHED_MAX_PV. */
