@@ -1,0 +1,103 @@
+"""Tests of the bsched-plan CLI: output formats and bad input."""
+import json
+import os
+import subprocess
+
+import pytest
+
+PLAN = os.environ.get("BSCHED_PLAN", os.path.join(os.path.dirname(__file__), "../../build/bin/bsched-plan"))
+
+TABLE1_PV = ["1", "1", "1", "2", "2", "3", "4", "4", "4"]
+TABLE2 = [  # the paper's Table 2 as input indices (p1.1 = 0 ... p4.3 = 8)
+    [0, 2, 5], [1, 3], [0, 2, 8], [1, 4], [0, 2, 6], [1, 3], [0, 2], [1, 4],
+    [0, 2, 5], [1, 3], [0, 2], [1, 4], [0, 2, 7], [1, 3], [0, 2], [1, 4],
+]
+
+
+def run(*args):
+    return subprocess.run([PLAN, *args], capture_output=True, text=True, timeout=60)
+
+
+def test_json_table1_and_table2():
+    r = run("--json", *TABLE1_PV)
+    assert r.returncode == 0, r.stderr
+    assert r.stderr == ""
+    doc = json.loads(r.stdout)  # exactly one JSON object, nothing else
+    assert doc["wait"] == [0, 1, 0, 1, 3, 0, 4, 12, 2]
+    assert doc["perfect"] == 3
+    assert doc["major_cycle"] == TABLE2
+
+
+def test_json_option_after_values():
+    r = run(*TABLE1_PV, "--json")
+    assert r.returncode == 0
+    assert json.loads(r.stdout)["major_cycle"] == TABLE2
+
+
+def test_text_tables_name_processes_like_the_paper():
+    r = run(*TABLE1_PV)
+    assert r.returncode == 0
+    out = r.stdout
+    assert "p4.2" in out and "12" in out
+    rows = [line.split(None, 1) for line in out.splitlines() if line[:1].isdigit()]
+    # Table 2 rows: "cycle  pX.Y, ..."
+    assert rows[0] == ["0", "p1.1, p1.3, p3.1"]
+    assert rows[2] == ["2", "p1.1, p1.3, p4.3"]
+    assert rows[15] == ["15", "p1.2, p2.2"]
+    assert "perfect = 3" in out
+    assert "2.3125" in out
+
+
+def test_json_major_cycle_is_balanced_for_a_larger_set():
+    pv = [str((i * 5) % 7) for i in range(40)]
+    doc = json.loads(run("--json", *pv).stdout)
+    maxpv = max(map(int, pv))
+    assert len(doc["major_cycle"]) == 2 ** maxpv
+    area = sum(2 ** (maxpv - int(p)) for p in pv)
+    lo, hi = area // 2 ** maxpv, -(-area // 2 ** maxpv)
+    assert doc["perfect"] == hi
+    for t, cycle in enumerate(doc["major_cycle"]):
+        assert lo <= len(cycle) <= hi
+        for i in cycle:
+            assert t % 2 ** int(pv[i]) == doc["wait"][i]
+
+
+@pytest.mark.parametrize("args, names", [
+    ([], "no priority values"),
+    (["1", "x"], "'x'"),
+    (["1", "2.5"], "'2.5'"),
+    (["1", ""], "''"),
+    (["-1"], "'-1'"),
+    (["1", "32"], "'32'"),
+    (["99999999999999999999"], "'99999999999999999999'"),
+    (["21"], "'21'"),
+    (["--verbose", "1"], "'--verbose'"),
+    (["--js", "1"], "'--js'"),
+])
+def test_bad_input_exits_2_with_one_line_naming_the_argument(args, names):
+    r = run(*args)
+    assert r.returncode == 2
+    assert r.stdout == ""
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1
+    assert lines[0].startswith("bsched-plan: ")
+    assert names in lines[0]
+
+
+def test_too_many_processes():
+    r = run(*(["3"] * 65536))
+    assert r.returncode == 2
+    assert r.stdout == ""
+    assert "too many processes" in r.stderr
+    assert len(r.stderr.splitlines()) == 1
+
+
+def test_largest_listed_pv_and_capacity():
+    r = run("--json", "20")
+    assert r.returncode == 0
+    doc = json.loads(r.stdout)
+    assert len(doc["major_cycle"]) == 2 ** 20
+    r = run("--json", *(["0"] * 65535))
+    assert r.returncode == 0
+    doc = json.loads(r.stdout)
+    assert doc["perfect"] == 65535 and len(doc["major_cycle"][0]) == 65535
