@@ -6,11 +6,19 @@
  * the same text is efficient on a CPU32 and close to its arithmetic ACSL spec.
  */
 #include "bsched.h"
+#include "spec/bsched_logic.h"
+#include "spec/bsched_lemmas.h"
 
 /* The low `bits` bits of x in reverse order (Fig. 6's reverse()).
  * BSCHED_MUTANT_NO_REVERSE builds a deliberately wrong variant (identity
  * instead of reversal) for the negative checks of the proof jobs: the
  * schedule stays periodic per class but is no longer balanced. */
+/*@ requires bits_range: bits <= BSCHED_MAX_PV;
+    requires x_range: x < pow2(bits);
+    assigns \nothing;
+    ensures reversal: \result == rev(bits, x);
+    ensures below_period: \result < pow2(bits);
+*/
 static uint32_t reverse_bits(uint32_t x, uint32_t bits)
 {
 #ifdef BSCHED_MUTANT_NO_REVERSE
@@ -20,6 +28,13 @@ static uint32_t reverse_bits(uint32_t x, uint32_t bits)
     uint32_t reversed = 0u;
     uint32_t rest = x;
     uint32_t b;
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ loop invariant b_range: 0 <= b <= bits;
+        loop invariant carries_rev: rev_acc(bits - b, rest, reversed) == rev(bits, x);
+        loop invariant reversed_range: reversed < pow2(b);
+        loop assigns b, reversed, rest;
+        loop variant bits - b;
+    */
     for (b = 0u; b < bits; b++) {
         reversed = reversed * 2u + rest % 2u;
         rest = rest / 2u;
@@ -29,13 +44,26 @@ static uint32_t reverse_bits(uint32_t x, uint32_t bits)
 }
 
 /* 2^pv as the period of a class, pv <= BSCHED_MAX_PV. */
+/*@ requires pv_range: pv <= BSCHED_MAX_PV;
+    assigns \nothing;
+    ensures is_pow2: \result == pow2(pv);
+*/
 static uint32_t period_of(uint8_t pv)
 {
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
     return (uint32_t)1u << pv;
 }
 
+/*@ predicate plausible{L}(struct bsched *s) =
+      1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV && s->perfect >= 1;
+*/
+
 /* A cheap check that *s came from bsched_init (a zeroed struct does not):
  * 1 <= count <= BSCHED_MAX_PROCS, maxpv <= BSCHED_MAX_PV, perfect >= 1. */
+/*@ requires \valid_read(s);
+    assigns \nothing;
+    ensures plausible_iff: \result != 0 <==> plausible(s);
+*/
 static int plausible_state(const struct bsched *s)
 {
     /* count - 1 < MAX covers both bounds and stays meaningful when MAX is 65535. */
@@ -43,11 +71,59 @@ static int plausible_state(const struct bsched *s)
            s->maxpv <= BSCHED_MAX_PV && s->perfect >= 1u;
 }
 
+/*@ requires valid_state: s == \null || \valid(s);
+    requires valid_input: pv != \null && 1 <= count <= BSCHED_MAX_PROCS ==>
+        \valid_read(pv + (0 .. count - 1));
+    requires separated: s != \null && pv != \null && 1 <= count <= BSCHED_MAX_PROCS ==>
+        \separated(s, pv + (0 .. count - 1));
+    assigns *s;
+
+    behavior null:
+      assumes s == \null || pv == \null;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior no_procs:
+      assumes s != \null && pv != \null && count == 0;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NO_PROCS;
+    behavior too_many:
+      assumes s != \null && pv != \null && count > BSCHED_MAX_PROCS;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_TOO_MANY;
+    behavior pv_range:
+      assumes s != \null && pv != \null && 1 <= count <= BSCHED_MAX_PROCS;
+      assumes \exists integer i; 0 <= i < count && pv[i] > BSCHED_MAX_PV;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_PV_RANGE;
+    behavior ok:
+      assumes s != \null && pv != \null && 1 <= count <= BSCHED_MAX_PROCS;
+      assumes \forall integer i; 0 <= i < count ==> pv[i] <= BSCHED_MAX_PV;
+      ensures ok_result: \result == BSCHED_OK;
+      ensures ok_well_formed: well_formed(s);
+      ensures ok_in_phase: in_phase(s);
+      ensures ok_count: s->count == count && s->cycle == 0 && s->ran_count == 0;
+      ensures ok_maxpv: s->maxpv == max_pv{Pre}(pv, count);
+      ensures ok_pv: \forall integer i; 0 <= i < count ==> s->pv[i] == pv[i];
+      ensures ok_closed_form: \forall integer i; 0 <= i < count ==>
+          s->offset[i] == init_wait{Pre}(pv, count, i);
+      ensures ok_wait_offset: \forall integer i; 0 <= i < count ==>
+          s->wait[i] == s->offset[i] < pow2(pv[i]);
+      ensures ok_stable_sort: \forall integer i; 0 <= i < count ==>
+          s->order[sorted_pos{Pre}(pv, count, i)] == i;
+      ensures ok_sort_onto: \forall integer id; 0 <= id < count ==>
+          0 <= s->order[id] < count && sorted_pos{Pre}(pv, count, s->order[id]) == id;
+      ensures ok_perfect: s->perfect == perfect_of{Pre}(pv, count);
+    complete behaviors;
+    disjoint behaviors;
+*/
 int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
 {
-    /* Per class: its size, then (after the prefix sum) its first slot in order[]. */
+    /* Per class k: its size c_k; the next free slot of the class in order[];
+     * the Fig. 6 cursor s_k + (members of the class placed so far). */
     uint32_t class_size[BSCHED_MAX_PV + 1];
     uint32_t class_next[BSCHED_MAX_PV + 1];
+    uint32_t class_cursor[BSCHED_MAX_PV + 1];
+    uint32_t n;
     uint32_t maxpv = 0u;
     uint32_t first = 0u;
     uint32_t carry = 0u;
@@ -65,67 +141,180 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     if (count > (size_t)BSCHED_MAX_PROCS) {
         return BSCHED_ERR_TOO_MANY;
     }
+    n = (uint32_t)count;
     /* Validate everything before writing anything: bad input leaves *s as it was. */
-    for (i = 0u; i < (uint32_t)count; i++) {
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer j; 0 <= j < i ==> pv[j] <= BSCHED_MAX_PV;
+        loop assigns i;
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
         if (pv[i] > BSCHED_MAX_PV) {
             return BSCHED_ERR_PV_RANGE;
         }
     }
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_count(pv, n); */
+    /*@ ghost lemma_first(pv, n); */
 
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant \forall integer c; 0 <= c < k ==> class_size[c] == 0;
+        loop assigns k, class_size[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
         class_size[k] = 0u;
     }
-    for (i = 0u; i < (uint32_t)count; i++) {
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant size_is_count: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
+            class_size[c] == class_count{Pre}(pv, i, c);
+        loop invariant maxpv_is_max: maxpv == max_pv{Pre}(pv, i) <= BSCHED_MAX_PV;
+        loop invariant maxpv_bounds: \forall integer j; 0 <= j < i ==> pv[j] <= maxpv;
+        loop assigns i, maxpv, class_size[0 .. BSCHED_MAX_PV];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
         class_size[pv[i]]++;
         if (pv[i] > maxpv) {
             maxpv = pv[i];
         }
     }
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant first == class_first{Pre}(pv, n, k);
+        loop invariant \forall integer c; 0 <= c < k ==> class_next[c] == class_first{Pre}(pv, n, c);
+        loop assigns k, first, class_next[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
         class_next[k] = first;
         first += class_size[k];
     }
-
-    /* Stable counting sort: ties keep the caller's order. */
-    for (i = 0u; i < (uint32_t)count; i++) {
-        s->pv[i] = pv[i];
-        s->order[class_next[pv[i]]] = (uint16_t)i;
-        class_next[pv[i]]++;
+    /* Fig. 6's start and n_slots, for every class at once: s_0 = 0, and
+     * s_(k+1) = 2 * ((s_k + c_k) mod 2^k). Class 0 has one slot, so it leaves
+     * start at 0, as Fig. 6 (whose loop begins at class 1) has it. */
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant k <= BSCHED_MAX_PV ==> start == class_start{Pre}(pv, n, k) && slots == pow2(k);
+        loop invariant k <= BSCHED_MAX_PV ==> start < slots;
+        loop invariant \forall integer c; 0 <= c < k ==>
+            class_cursor[c] == class_start{Pre}(pv, n, c) < pow2(c);
+        loop assigns k, start, slots, class_cursor[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        class_cursor[k] = start;
+        start = (start + class_size[k]) % slots;
+        if (k < BSCHED_MAX_PV) {
+            start = start * 2u;
+            slots = slots * 2u;
+        }
     }
+
+    /* Stable counting sort (ties keep the caller's order) and, per process,
+     * Fig. 6: member j of class k waits reverse_k((s_k + j) mod 2^k). */
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant next_is_slot: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
+            class_next[c] == class_first{Pre}(pv, n, c) + class_count{Pre}(pv, i, c);
+        loop invariant cursor_is_rank: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
+            class_cursor[c] == class_start{Pre}(pv, n, c) + class_count{Pre}(pv, i, c);
+        loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
+            s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
+        loop invariant order_placed: \forall integer j; 0 <= j < i ==>
+            s->order[sorted_pos{Pre}(pv, n, j)] == j;
+        loop invariant order_filled: \forall integer c, id; 0 <= c <= BSCHED_MAX_PV &&
+            class_first{Pre}(pv, n, c) <= id < class_next[c] ==>
+            0 <= s->order[id] < i && pv[s->order[id]] == c &&
+            sorted_pos{Pre}(pv, n, s->order[id]) == id;
+        loop assigns i, class_next[0 .. BSCHED_MAX_PV], class_cursor[0 .. BSCHED_MAX_PV],
+            s->order[0 .. n - 1], s->offset[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        uint8_t pvi = pv[i];
+        /*@ assert rank_below_size: class_count{Pre}(pv, i, pvi) < class_count{Pre}(pv, n, pvi); */
+        /*@ assert slot_in_class: class_next[pvi] < class_first{Pre}(pv, n, pvi + 1) <= n; */
+        s->order[class_next[pvi]] = (uint16_t)i;
+        class_next[pvi]++;
+        s->offset[i] = reverse_bits(class_cursor[pvi] % period_of(pvi), pvi);
+        class_cursor[pvi]++;
+    }
+
+    /* Every slot of order[] was filled: class c fills [first_c, first_(c+1)). */
+    /*@ ghost int gk;
+      /@ loop invariant 0 <= gk <= BSCHED_MAX_PV + 1;
+         loop invariant \forall integer id; 0 <= id < class_first{Pre}(pv, n, gk) ==>
+             0 <= s->order[id] < n && sorted_pos{Pre}(pv, n, s->order[id]) == id;
+         loop assigns gk;
+         loop variant BSCHED_MAX_PV + 1 - gk;
+      @/
+      for (gk = 0; gk <= BSCHED_MAX_PV; gk++) {
+      }
+    */
 
     /* perfect = ceil(sum_k c_k 2^-k), folded from the top class down:
      * ceil(c_(k-1) + x/2) = c_(k-1) + ceil(ceil(x)/2), so 32 bits suffice. */
-    for (k = maxpv; k > 0u; k--) {
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV;
+        loop invariant carry == carry_from{Pre}(pv, n, k + 1);
+        loop invariant carry + class_first{Pre}(pv, n, k + 1) <= n;
+        loop invariant carry == 0 ==> class_first{Pre}(pv, n, k + 1) == n;
+        loop assigns k, carry;
+        loop variant k;
+    */
+    for (k = BSCHED_MAX_PV; k > 0u; k--) {
         carry = (class_size[k] + carry + 1u) / 2u;
     }
     s->perfect = (uint16_t)(class_size[0] + carry);
 
-    /* Fig. 6. Class 0 runs every cycle. For class k >= 1, member j gets
-     * reverse_k((start + j) mod 2^k); start and the slot count double per class. */
-    first = class_size[0];
-    for (i = 0u; i < class_size[0]; i++) {
-        s->offset[s->order[i]] = 0u;
-    }
-    for (k = 1u; k <= maxpv; k++) {
-        start = start * 2u;
-        slots = slots * 2u;
-        for (i = 0u; i < class_size[k]; i++) {
-            s->offset[s->order[first + i]] = reverse_bits((start + i) % slots, k);
-        }
-        start = (start + class_size[k]) % slots;
-        first += class_size[k];
-    }
-
-    for (i = 0u; i < (uint32_t)count; i++) {
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer j; 0 <= j < i ==> s->wait[j] == s->offset[j];
+        loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
+        loop assigns i, s->wait[0 .. n - 1], s->pv[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        s->pv[i] = pv[i];
         s->wait[i] = s->offset[i];
     }
-    s->count = (uint16_t)count;
+    s->count = (uint16_t)n;
     s->maxpv = (uint8_t)maxpv;
     s->cycle = 0u;
     s->ran_count = 0u;
     return BSCHED_OK;
 }
 
+/*@ requires valid_state: s == \null || \valid(s);
+    requires from_init: s != \null && plausible(s) ==> well_formed(s);
+    assigns s->wait[0 .. BSCHED_MAX_PROCS - 1], s->ran[0 .. BSCHED_MAX_PROCS - 1],
+            s->ran_count, s->cycle;
+
+    behavior null:
+      assumes s == \null;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior bad_state:
+      assumes s != \null && !plausible(s);
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_STATE;
+    behavior ok:
+      assumes s != \null && plausible(s);
+      ensures ok_count: 0 <= \result <= s->perfect && \result == s->ran_count;
+      ensures ok_well_formed: well_formed(s);
+      ensures ok_cycle: s->cycle == (\old(s->cycle) + 1) % pow2(s->maxpv);
+      ensures ran_were_due: \forall integer j; 0 <= j < \result ==>
+          0 <= s->ran[j] < s->count && \at(s->wait[s->ran[j]], Pre) == 0;
+      ensures ran_distinct: \forall integer a, b; 0 <= a < b < \result ==> s->ran[a] != s->ran[b];
+      ensures wait_ran: \forall integer i; 0 <= i < s->count && ran_last(s, i) ==>
+          s->wait[i] == pow2(s->pv[i]) - 1;
+      ensures wait_not_ran: \forall integer i; 0 <= i < s->count && !ran_last(s, i) ==>
+          s->wait[i] == (\at(s->wait[i], Pre) > 0 ? \at(s->wait[i], Pre) - 1 : 0);
+      ensures not_capped: \result < s->perfect ==>
+          \forall integer id; 0 <= id < s->count && \at(s->wait[s->order[id]], Pre) == 0 ==>
+              ran_last(s, s->order[id]);
+      ensures periodic: in_phase{Pre}(s) &&
+          (\forall integer i; 0 <= i < s->count && \at(s->wait[i], Pre) == 0 ==> ran_last(s, i)) ==>
+          in_phase(s);
+    complete behaviors;
+    disjoint behaviors;
+*/
 int32_t bsched_step(struct bsched *s)
 {
     uint32_t done = 0u;
@@ -138,8 +327,24 @@ int32_t bsched_step(struct bsched *s)
     if (!plausible_state(s)) {
         return BSCHED_ERR_STATE;
     }
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
 
     /* Fig. 7, lines 5-12: run the due processes in order, at most `perfect`. */
+    /*@ loop invariant 0 <= id <= s->count;
+        loop invariant 0 <= done <= id && done <= s->perfect;
+        loop invariant ran_due: \forall integer j; 0 <= j < done ==>
+            0 <= s->ran[j] < s->count && \at(s->wait[s->ran[j]], Pre) == 0 &&
+            s->wait[s->ran[j]] == pow2(s->pv[s->ran[j]]);
+        loop invariant ran_distinct: \forall integer a, b; 0 <= a < b < done ==> s->ran[a] != s->ran[b];
+        loop invariant wait_kept: \forall integer p; 0 <= p < s->count ==>
+            (\forall integer j; 0 <= j < done ==> s->ran[j] != p) ==> s->wait[p] == \at(s->wait[p], Pre);
+        loop invariant ran_visited: \forall integer j; 0 <= j < done ==>
+            \exists integer d; 0 <= d < id && s->ran[j] == s->order[d];
+        loop invariant visited_all: \forall integer d; 0 <= d < id && \at(s->wait[s->order[d]], Pre) == 0 ==>
+            (\exists integer j; 0 <= j < done && s->ran[j] == s->order[d]);
+        loop assigns id, done, s->ran[0 .. BSCHED_MAX_PROCS - 1], s->wait[0 .. BSCHED_MAX_PROCS - 1];
+        loop variant s->count - id;
+    */
     for (id = 0u; id < s->count && done < s->perfect; id++) {
         uint16_t p = s->order[id];
         if (s->wait[p] == 0u) {
@@ -148,7 +353,15 @@ int32_t bsched_step(struct bsched *s)
             s->wait[p] = period_of(s->pv[p]);
         }
     }
+
     /* Fig. 7, line 13: every positive wait counts down one cycle. */
+    /*@ loop invariant 0 <= i <= s->count;
+        loop invariant \forall integer p; 0 <= p < i ==>
+            s->wait[p] == (\at(s->wait[p], LoopEntry) > 0 ? \at(s->wait[p], LoopEntry) - 1 : 0);
+        loop invariant \forall integer p; i <= p < s->count ==> s->wait[p] == \at(s->wait[p], LoopEntry);
+        loop assigns i, s->wait[0 .. BSCHED_MAX_PROCS - 1];
+        loop variant s->count - i;
+    */
     for (i = 0u; i < s->count; i++) {
         if (s->wait[i] > 0u) {
             s->wait[i]--;
@@ -156,9 +369,35 @@ int32_t bsched_step(struct bsched *s)
     }
     s->ran_count = (uint16_t)done;
     s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
+    /*@ ghost lemma_pow2_divides(s->maxpv); */
     return (int32_t)done;
 }
 
+/* The process bodies are called through a pointer; WP cannot see them. The
+ * contract below therefore says nothing about *s after the calls beyond what
+ * bsched_step guarantees before them (see the report: an assumption, documented
+ * in bsched.h, that the bodies do not modify *s). */
+/*@ requires valid_state: s == \null || \valid(s);
+    requires from_init: s != \null && plausible(s) ==> well_formed(s);
+
+    behavior null_run:
+      assumes run == \null;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior null_state:
+      assumes run != \null && s == \null;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior bad_state:
+      assumes run != \null && s != \null && !plausible(s);
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_STATE;
+    behavior ok:
+      assumes run != \null && s != \null && plausible(s);
+      ensures \result >= 0;
+    complete behaviors;
+    disjoint behaviors;
+*/
 int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
 {
     int32_t ran;
@@ -168,12 +407,44 @@ int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
         return BSCHED_ERR_NULL;
     }
     ran = bsched_step(s);
+    /*@ loop invariant 0 <= k;
+        loop invariant ran <= BSCHED_MAX_PROCS;
+        loop invariant ran > 0 ==> k <= ran;
+        loop variant (ran > 0 ? ran : 0) - k;
+    */
     for (k = 0u; ran > 0 && k < (uint32_t)ran; k++) {
         run(context, s->ran[k]);
     }
     return ran;
 }
 
+/*@ requires valid_state: s == \null || \valid_read(s);
+    requires from_init: s != \null && plausible(s) ==> well_formed(s);
+    requires valid_due: due == \null || (s != \null && plausible(s) ==> \valid(due + (0 .. s->perfect - 1)));
+    requires separated: s != \null && due != \null && plausible(s) ==>
+        \separated(s, due + (0 .. s->perfect - 1));
+    assigns due[0 .. BSCHED_MAX_PROCS - 1];
+
+    behavior null:
+      assumes s == \null || due == \null;
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior bad_state:
+      assumes s != \null && due != \null && !plausible(s);
+      assigns \nothing;
+      ensures \result == BSCHED_ERR_STATE;
+    behavior ok:
+      assumes s != \null && due != \null && plausible(s);
+      assigns due[0 .. s->perfect - 1];
+      ensures ok_count: 0 <= \result <= s->perfect;
+      ensures ok_due: \forall integer j; 0 <= j < \result ==>
+          0 <= due[j] < s->count && s->wait[due[j]] == ahead % pow2(s->pv[due[j]]);
+      ensures ok_complete: \result < s->perfect ==>
+          \forall integer id; 0 <= id < s->count && s->wait[s->order[id]] == ahead % pow2(s->pv[s->order[id]]) ==>
+              \exists integer j; 0 <= j < \result && due[j] == s->order[id];
+    complete behaviors;
+    disjoint behaviors;
+*/
 int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
 {
     uint32_t done = 0u;
@@ -186,6 +457,16 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
         return BSCHED_ERR_STATE;
     }
     /* wait < 2^pv always, so p is due `ahead` cycles on iff wait == ahead mod 2^pv. */
+    /*@ loop invariant 0 <= id <= s->count;
+        loop invariant 0 <= done <= id && done <= s->perfect;
+        loop invariant \forall integer j; 0 <= j < done ==>
+            0 <= due[j] < s->count && s->wait[due[j]] == ahead % pow2(s->pv[due[j]]);
+        loop invariant done < s->perfect ==> \forall integer d; 0 <= d < id &&
+            s->wait[s->order[d]] == ahead % pow2(s->pv[s->order[d]]) ==>
+            \exists integer j; 0 <= j < done && due[j] == s->order[d];
+        loop assigns id, done, due[0 .. s->perfect - 1];
+        loop variant s->count - id;
+    */
     for (id = 0u; id < s->count && done < s->perfect; id++) {
         uint16_t p = s->order[id];
         if (s->wait[p] == ahead % period_of(s->pv[p])) {

@@ -1,0 +1,101 @@
+/*
+ * Shared pieces of the CBMC harnesses for bsched (bsched/proofs/cbmc/<harness>/).
+ *
+ * Bounds (set by each harness Makefile with -D, reused in its unwind set):
+ *   BSCHED_MAX_PROCS  N: the library capacity, also the largest process count tried
+ *   PROOF_MAX_PV      P: the largest priority value tried (0 <= P <= 8 keeps the
+ *                     fixed-point sums below in 32 bits: N * 2^P <= 65535 * 256)
+ *
+ * The specification side is written from the paper and the hand proof
+ * (/work/shared/notes/why-b-schedules-are-balanced.md), not from bsched.c:
+ * utilisation is a fixed-point sum with 2^P as the unit, and everything on the
+ * hot paths uses masks and shifts, never % or / by a variable.
+ */
+#ifndef PROOF_MODEL_H
+#define PROOF_MODEL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "bsched.h"
+
+#ifndef PROOF_MAX_PV
+#error "PROOF_MAX_PV (the largest priority value to try) must be given with -D"
+#endif
+#if PROOF_MAX_PV < 0 || PROOF_MAX_PV > 8
+#error "PROOF_MAX_PV must be between 0 and 8"
+#endif
+
+/* CBMC's nondeterministic values: functions without a body return any value. */
+uint8_t nondet_uint8(void);
+uint16_t nondet_uint16(void);
+uint32_t nondet_uint32(void);
+size_t nondet_size(void);
+int nondet_int(void);
+
+#define PROOF_N ((uint32_t)BSCHED_MAX_PROCS)
+#define PROOF_P ((uint32_t)PROOF_MAX_PV)
+/* One unit of utilisation in the fixed-point sums: U = area / PROOF_UNIT. */
+#define PROOF_UNIT ((uint32_t)1u << PROOF_MAX_PV)
+
+/* A priority set: n processes, pv[0..n-1] in the caller's order. */
+struct proof_set {
+    uint32_t n;
+    uint8_t pv[BSCHED_MAX_PROCS];
+    uint32_t maxpv;   /* the largest pv[i], i < n */
+    uint32_t area;    /* sum over i < n of 2^(P - pv[i]): U * 2^P, exact */
+    uint32_t load_lo; /* floor(U) */
+    uint32_t load_hi; /* ceil(U) */
+};
+
+/* Any n in 1..N and any pv[i] in 0..P: every sequence of priority values within
+ * the bounds, hence every multiset with every input order. Entries at and after
+ * n are also constrained (they are never read by the library). */
+static void proof_nondet_set(struct proof_set *set)
+{
+    uint32_t i;
+    set->n = nondet_uint32();
+    __CPROVER_assume(set->n >= 1u && set->n <= PROOF_N);
+    set->maxpv = 0u;
+    set->area = 0u;
+    for (i = 0u; i < PROOF_N; i++) {
+        set->pv[i] = nondet_uint8();
+        __CPROVER_assume(set->pv[i] <= PROOF_P);
+        if (i < set->n) {
+            set->area += PROOF_UNIT >> set->pv[i];
+            if (set->pv[i] > set->maxpv) {
+                set->maxpv = set->pv[i];
+            }
+        }
+    }
+    set->load_lo = set->area >> PROOF_MAX_PV;
+    set->load_hi = (set->area + PROOF_UNIT - 1u) >> PROOF_MAX_PV;
+}
+
+/* 2^pv - 1: the residue mask of a process's period. */
+static uint32_t proof_mask(uint32_t pv)
+{
+    return ((uint32_t)1u << pv) - 1u;
+}
+
+/* (w - t) mod 2^pv for w < 2^pv, without wrapping: the wait the periodicity
+ * invariant prescribes at the start of minor cycle t. */
+static uint32_t proof_wait_at(uint32_t w, uint32_t pv, uint32_t t)
+{
+    uint32_t m = proof_mask(pv);
+    return (w + (m + 1u) - (t & m)) & m;
+}
+
+/* Is a process with offset w (w < 2^pv) due in minor cycle t? t = w (mod 2^pv). */
+static int proof_due_at(uint32_t w, uint32_t pv, uint32_t t)
+{
+    return (t & proof_mask(pv)) == w;
+}
+
+/* Execution order key: ascending pv, ties in input order (a stable sort). */
+static uint32_t proof_order_key(const struct proof_set *set, uint32_t index)
+{
+    return (uint32_t)set->pv[index] * 65536u + index;
+}
+
+#endif /* PROOF_MODEL_H */

@@ -1,0 +1,33 @@
+# Frama-C WP with Why3 and the SMT solvers for `make prove` (bsched/proofs/wp/).
+# Why3 1.5.1 predates cvc5, so cvc5 is registered by hand with our driver
+# (bsched/proofs/wp/cvc5.drv). The Why3 configuration lives in $BSCHED_TOOLS,
+# not in ~/.why3.conf; wp.mk points both why3 and Frama-C at it (WHY3CONFIG).
+apt_install frama-c-base why3 z3 cvc4 cvc5
+why3_dir="$BSCHED_TOOLS/why3"
+why3_conf="$why3_dir/why3.conf"
+cvc5_driver="$BSCHED_ROOT/bsched/proofs/wp/cvc5.drv"
+# The stamp names the driver path and solver versions: a moved checkout or an
+# upgraded solver re-runs the detection, anything else returns at once.
+want="$cvc5_driver $(dpkg-query -W -f='${Version} ' why3 z3 cvc4 cvc5 2>/dev/null)"
+if [ ! -f "$why3_conf" ] || [ "$(cat "$why3_dir/stamp" 2>/dev/null)" != "$want" ]; then
+    echo "ci/setup: why3 config detect -> $why3_conf" >&2
+    mkdir -p "$why3_dir"
+    rm -f "$why3_conf"
+    WHY3CONFIG="$why3_conf" why3 config detect >&2
+    cvc5_version=$(cvc5 --version | sed -n 's/^This is cvc5 version \([^ ]*\).*/\1/p' | head -1)
+    cat >> "$why3_conf" <<CONF
+
+[prover]
+name = "CVC5"
+version = "$cvc5_version"
+alternative = ""
+command = "/usr/bin/cvc5 --stats --tlimit=%t000 --lang=smt2 %f"
+command_steps = "/usr/bin/cvc5 --stats --rlimit=%S --lang=smt2 %f"
+driver = "$cvc5_driver"
+editor = ""
+in_place = false
+interactive = false
+shortcut = "cvc5"
+CONF
+    echo "$want" > "$why3_dir/stamp"
+fi

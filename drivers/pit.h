@@ -1,0 +1,38 @@
+/*
+ * System tick from the MC68332 SIM periodic interrupt timer (PIT), clocked
+ * by the 32.768 kHz reference: rate = 8192 Hz / PITM (PITM 1..255), or
+ * 16 Hz / PITM with the /512 prescaler. Interrupt level 4, vector 64
+ * (VECTOR_PIT); the driver owns vector 64 (cpu32_vector_64).
+ */
+#ifndef DRIVERS_PIT_H
+#define DRIVERS_PIT_H
+
+#include <stdint.h>
+
+/* Called from the tick interrupt (IPL 4, interrupts of level <= 4 masked)
+ * with the new tick count; keep it short. */
+typedef void (*pit_tick_hook_fn)(uint32_t ticks);
+
+/*
+ * Starts the PIT at exactly rate_hz ticks per second and resets the tick
+ * count to 0. rate_hz must be 8192 / n or 16 / n for an n in 1..255.
+ * hook may be NULL. Returns 0, or -1 (PIT left stopped) for a rate the PIT
+ * cannot produce exactly.
+ * Interrupts must be enabled (SR mask < 4) by the caller for ticks to count.
+ */
+int pit_start(uint32_t rate_hz, pit_tick_hook_fn hook);
+
+/* Stops the PIT (PITR = 0); the tick count keeps its value. */
+void pit_stop(void);
+
+/* Ticks since pit_start; wraps after 2^32 ticks. */
+uint32_t pit_ticks(void);
+
+/* The rate pit_start set, in Hz (0 while never started). */
+uint32_t pit_rate_hz(void);
+
+/* Waits (in STOP, low power) until the tick count differs from `seen`, and
+ * returns the new count. Leaves interrupts enabled. */
+uint32_t pit_wait_tick_after(uint32_t seen);
+
+#endif /* DRIVERS_PIT_H */

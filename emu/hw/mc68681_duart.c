@@ -1,0 +1,621 @@
+/*
+ * Motorola MC68681 DUART on the RoboCube board (0xFFE400, IRQ level 5,
+ * vectored through IVR).  Channel A = radio link, channel B = console.
+ *
+ * Modelled: MR1/MR2 with the MR pointer, SR, CSR (stored; baud rates are not
+ * timed: characters go out at once), CR commands (receiver/transmitter
+ * enable/disable and reset, reset MR pointer, reset error status), the
+ * 3-deep receive FIFO with overrun, local-loopback and auto-echo channel
+ * modes, ISR/IMR, IVR, the input port (IP0 = radio carrier detect, IP1..IP5 =
+ * binary inputs; IPCR change detection with the ACR enables), OPCR/OPR
+ * set/reset, and the counter/timer (counter and timer modes from the X1
+ * crystal or X1/16, ISR counter-ready, start/stop commands) in virtual time.
+ * Host interface (QOM): "input-port" (read/write), "opr" and "output-pins"
+ * (read-only).
+ */
+#include "qemu/osdep.h"
+#include "qemu/log.h"
+#include "qemu/timer.h"
+#include "qapi/error.h"
+#include "qapi/visitor.h"
+#include "hw/sysbus.h"
+#include "hw/qdev-properties.h"
+#include "hw/qdev-properties-system.h"
+#include "chardev/char-fe.h"
+#include "qom/object.h"
+#include "robocube_board.h"
+#include "robocube_io.h"
+
+OBJECT_DECLARE_SIMPLE_TYPE(MC68681DuartState, MC68681_DUART)
+
+#define DUART_LEVEL 5
+#define RX_FIFO_DEPTH 3
+
+/* SR bits */
+#define SR_RXRDY 0x01
+#define SR_FFULL 0x02
+#define SR_TXRDY 0x04
+#define SR_TXEMT 0x08
+#define SR_OE    0x10
+
+/* ISR bits (channel A; channel B = << 4 for TxRDY/RxRDY) */
+#define ISR_TXRDYA  0x01
+#define ISR_RXRDYA  0x02
+#define ISR_CTR     0x08
+#define ISR_TXRDYB  0x10
+#define ISR_RXRDYB  0x20
+#define ISR_IPCHG   0x80
+
+typedef struct DuartChannel {
+    CharBackend chr;
+    uint8_t mr1, mr2;
+    bool mr_ptr_mr2;        /* false: next MR access hits MR1 */
+    uint8_t csr;
+    bool rx_enabled, tx_enabled;
+    bool overrun;
+    uint8_t rx_fifo[RX_FIFO_DEPTH];
+    unsigned rx_count;
+} DuartChannel;
+
+struct MC68681DuartState {
+    SysBusDevice parent_obj;
+
+    MemoryRegion iomem;
+    RoboCubeIntc *intc;
+    DuartChannel ch[2];     /* 0 = A (radio), 1 = B (console) */
+
+    uint8_t acr, imr, ivr, opcr, opr;
+    uint8_t isr_latched;    /* counter-ready and input-port-change bits */
+    uint8_t ip;             /* pin levels IP0..IP5 (bits 6,7 read as 1) */
+    uint8_t ipcr_delta;     /* IPCR bits 7..4: change of IP3..IP0 since read */
+    uint16_t ct_preload;    /* CTUR:CTLR */
+
+    /* Counter/timer: runs from the X1 crystal (or X1/16), see ct_* below. */
+    QEMUTimer *ct_timer;
+    bool ct_running;        /* counter mode: between start and stop */
+    int64_t ct_start_ns;    /* when the current count started */
+    uint32_t ct_start_value;
+};
+
+static MC68681DuartState *the_duart;
+
+uint8_t robocube_duart_opr(void)
+{
+    return the_duart ? the_duart->opr : 0;
+}
+
+/* ---- interrupts ---------------------------------------------------------- */
+
+static uint8_t channel_sr(DuartChannel *c)
+{
+    uint8_t sr = 0;
+
+    if (c->rx_count) {
+        sr |= SR_RXRDY;
+    }
+    if (c->rx_count == RX_FIFO_DEPTH) {
+        sr |= SR_FFULL;
+    }
+    if (c->tx_enabled) {
+        /* Transmission is instantaneous: holding and shift register empty. */
+        sr |= SR_TXRDY | SR_TXEMT;
+    }
+    if (c->overrun) {
+        sr |= SR_OE;
+    }
+    return sr;
+}
+
+static uint8_t duart_isr(MC68681DuartState *s)
+{
+    uint8_t isr = s->isr_latched;
+    int i;
+
+    for (i = 0; i < 2; i++) {
+        DuartChannel *c = &s->ch[i];
+        uint8_t sr = channel_sr(c);
+        /* MR1 bit 6 (RxIRQ select): 0 = RxRDY, 1 = FIFO full. */
+        bool rx = (c->mr1 & 0x40) ? (sr & SR_FFULL) : (sr & SR_RXRDY);
+
+        if (sr & SR_TXRDY) {
+            isr |= i ? ISR_TXRDYB : ISR_TXRDYA;
+        }
+        if (rx) {
+            isr |= i ? ISR_RXRDYB : ISR_RXRDYA;
+        }
+    }
+    return isr;
+}
+
+static void duart_update_irq(MC68681DuartState *s)
+{
+    bool active = duart_isr(s) & s->imr;
+
+    robocube_intc_request(s->intc, RC_IRQ_DUART, active ? DUART_LEVEL : 0, s->ivr);
+}
+
+/* ---- receive / transmit ------------------------------------------------ */
+
+static void channel_push_rx(MC68681DuartState *s, DuartChannel *c, uint8_t byte)
+{
+    if (c->rx_count < RX_FIFO_DEPTH) {
+        c->rx_fifo[c->rx_count++] = byte;
+    } else {
+        /* The shift register's character overwrites the last FIFO entry. */
+        c->overrun = true;
+        c->rx_fifo[RX_FIFO_DEPTH - 1] = byte;
+    }
+}
+
+static void channel_transmit(MC68681DuartState *s, DuartChannel *c, uint8_t byte)
+{
+    if (!c->tx_enabled) {
+        qemu_log_mask(LOG_GUEST_ERROR, "mc68681: write to TB with transmitter off\n");
+        return;
+    }
+    switch (c->mr2 >> 6) {
+    case 2:         /* local loopback: back into our own receiver */
+        if (c->rx_enabled) {
+            channel_push_rx(s, c, byte);
+        }
+        break;
+    case 1:         /* auto echo: the CPU transmitter is disconnected */
+        break;
+    default:
+        /* Blocking write: a console must not lose characters. */
+        qemu_chr_fe_write_all(&c->chr, &byte, 1);
+        break;
+    }
+}
+
+static int duart_can_receive(DuartChannel *c)
+{
+    /* Characters wait in the host-side chardev while the receiver is off or
+     * the FIFO is full (no loss from the host's point of view). */
+    if (!c->rx_enabled || (c->mr2 >> 6) == 2) {
+        return 0;
+    }
+    return RX_FIFO_DEPTH - c->rx_count;
+}
+
+static void duart_receive(MC68681DuartState *s, DuartChannel *c,
+                          const uint8_t *buf, int size)
+{
+    int i;
+
+    for (i = 0; i < size; i++) {
+        channel_push_rx(s, c, buf[i]);
+        if ((c->mr2 >> 6) == 1) {
+            qemu_chr_fe_write_all(&c->chr, &buf[i], 1);
+        }
+    }
+    duart_update_irq(s);
+}
+
+static int duart_can_receive_a(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    return duart_can_receive(&s->ch[0]);
+}
+
+static int duart_can_receive_b(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    return duart_can_receive(&s->ch[1]);
+}
+
+static void duart_receive_a(void *opaque, const uint8_t *buf, int size)
+{
+    MC68681DuartState *s = opaque;
+    duart_receive(s, &s->ch[0], buf, size);
+}
+
+static void duart_receive_b(void *opaque, const uint8_t *buf, int size)
+{
+    MC68681DuartState *s = opaque;
+    duart_receive(s, &s->ch[1], buf, size);
+}
+
+static uint8_t channel_read_rb(MC68681DuartState *s, DuartChannel *c)
+{
+    uint8_t byte = c->rx_fifo[0];
+
+    if (c->rx_count) {
+        memmove(c->rx_fifo, c->rx_fifo + 1, RX_FIFO_DEPTH - 1);
+        c->rx_count--;
+        qemu_chr_fe_accept_input(&c->chr);
+    }
+    return byte;
+}
+
+static void channel_command(MC68681DuartState *s, DuartChannel *c, uint8_t cr)
+{
+    switch ((cr >> 4) & 7) {
+    case 1:
+        c->mr_ptr_mr2 = false;
+        break;
+    case 2:
+        c->rx_enabled = false;
+        c->rx_count = 0;
+        c->overrun = false;
+        break;
+    case 3:
+        c->tx_enabled = false;
+        break;
+    case 4:
+        c->overrun = false;
+        break;
+    default:
+        /* Break commands: no break is ever received or sent. */
+        break;
+    }
+    if ((cr & 3) == 1) {
+        c->rx_enabled = true;
+    } else if ((cr & 3) == 2) {
+        c->rx_enabled = false;
+    }
+    if (((cr >> 2) & 3) == 1) {
+        c->tx_enabled = true;
+    } else if (((cr >> 2) & 3) == 2) {
+        c->tx_enabled = false;
+    }
+    if (c->rx_enabled) {
+        qemu_chr_fe_accept_input(&c->chr);
+    }
+}
+
+/* ---- counter/timer ------------------------------------------------------- */
+
+/* Clock of the counter/timer in Hz, or 0 for sources not modelled
+ * (IP2 pin, TxCA/TxCB). */
+static uint32_t ct_clock_hz(MC68681DuartState *s)
+{
+    switch ((s->acr >> 4) & 7) {
+    case 3: case 7: return RC_DUART_XTAL_HZ / 16;
+    case 6: return RC_DUART_XTAL_HZ;
+    default: return 0;
+    }
+}
+
+static bool ct_timer_mode(MC68681DuartState *s)
+{
+    return s->acr & 0x40;
+}
+
+/* Clock cycles between two counter-ready events. */
+static uint64_t ct_event_cycles(MC68681DuartState *s)
+{
+    if (ct_timer_mode(s)) {
+        /* Square wave of period 2 x preload; ISR[3] once per period. */
+        return 2 * (uint64_t)(s->ct_preload ? s->ct_preload : 0x10000);
+    }
+    /* Counter: from the start value down through 0 (then wraps from 0xFFFF). */
+    return s->ct_start_value ? s->ct_start_value : 0x10000;
+}
+
+static void ct_schedule(MC68681DuartState *s)
+{
+    uint32_t hz = ct_clock_hz(s);
+
+    if (!hz || (!ct_timer_mode(s) && !s->ct_running)) {
+        timer_del(s->ct_timer);
+        return;
+    }
+    timer_mod(s->ct_timer, s->ct_start_ns +
+              (int64_t)muldiv64(ct_event_cycles(s), NANOSECONDS_PER_SECOND, hz));
+}
+
+static void ct_start(MC68681DuartState *s)
+{
+    s->ct_start_ns = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+    s->ct_start_value = s->ct_preload;
+    ct_schedule(s);
+}
+
+static void ct_expire(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    uint32_t hz = ct_clock_hz(s);
+
+    s->isr_latched |= ISR_CTR;
+    /* Next period starts exactly where this one ended. */
+    s->ct_start_ns += (int64_t)muldiv64(ct_event_cycles(s), NANOSECONDS_PER_SECOND, hz);
+    s->ct_start_value = ct_timer_mode(s) ? s->ct_preload : 0x10000;
+    ct_schedule(s);
+    duart_update_irq(s);
+}
+
+/* Current counter value (CUR:CLR readback). */
+static uint16_t ct_value(MC68681DuartState *s)
+{
+    uint32_t hz = ct_clock_hz(s);
+    uint64_t elapsed, period;
+
+    if (!hz || (!ct_timer_mode(s) && !s->ct_running)) {
+        return s->ct_start_value;
+    }
+    elapsed = muldiv64(qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) - s->ct_start_ns,
+                       hz, NANOSECONDS_PER_SECOND);
+    if (ct_timer_mode(s)) {
+        period = s->ct_preload ? s->ct_preload : 0x10000;
+        return period - (elapsed % period);
+    }
+    return (uint16_t)(s->ct_start_value - elapsed);
+}
+
+/* ---- input port ------------------------------------------------------------ */
+
+static void duart_set_ip(MC68681DuartState *s, uint8_t pins)
+{
+    uint8_t changed = (s->ip ^ pins) & 0x0F;
+
+    s->ip = pins & 0x3F;
+    s->ipcr_delta |= changed;
+    if (changed & s->acr & 0x0F) {
+        s->isr_latched |= ISR_IPCHG;
+    }
+    duart_update_irq(s);
+}
+
+/* ---- register access ----------------------------------------------------- */
+
+static uint64_t duart_read(void *opaque, hwaddr addr, unsigned size)
+{
+    MC68681DuartState *s = opaque;
+    DuartChannel *c = &s->ch[(addr >> 3) & 1];
+    uint8_t v = 0;
+
+    switch (addr & 0xF) {
+    case 0x0: case 0x8:                 /* MR1x / MR2x */
+        v = c->mr_ptr_mr2 ? c->mr2 : c->mr1;
+        c->mr_ptr_mr2 = true;
+        break;
+    case 0x1: case 0x9:                 /* SRx */
+        v = channel_sr(c);
+        break;
+    case 0x3: case 0xB:                 /* RBx */
+        v = channel_read_rb(s, c);
+        break;
+    case 0x4:                           /* IPCR */
+        v = (s->ipcr_delta << 4) | (s->ip & 0x0F);
+        s->ipcr_delta = 0;
+        s->isr_latched &= ~ISR_IPCHG;
+        break;
+    case 0x5:                           /* ISR */
+        v = duart_isr(s);
+        break;
+    case 0x6:                           /* CUR */
+        v = ct_value(s) >> 8;
+        break;
+    case 0x7:                           /* CLR */
+        v = ct_value(s) & 0xFF;
+        break;
+    case 0xC:                           /* IVR */
+        v = s->ivr;
+        break;
+    case 0xD:                           /* IP: IP0..IP5, bits 6-7 read 1 */
+        v = s->ip | 0xC0;
+        break;
+    case 0xE:                           /* start counter command */
+        ct_start(s);
+        s->ct_running = true;
+        ct_schedule(s);
+        v = 0xFF;
+        break;
+    case 0xF:                           /* stop counter command */
+        s->isr_latched &= ~ISR_CTR;
+        if (!ct_timer_mode(s) && s->ct_running) {
+            s->ct_start_value = ct_value(s);
+            s->ct_running = false;
+            ct_schedule(s);
+        }
+        v = 0xFF;
+        break;
+    default:                            /* 0x2, 0xA: reserved/test */
+        v = 0xFF;
+        break;
+    }
+    duart_update_irq(s);
+    return v;
+}
+
+static void duart_write(void *opaque, hwaddr addr, uint64_t value, unsigned size)
+{
+    MC68681DuartState *s = opaque;
+    DuartChannel *c = &s->ch[(addr >> 3) & 1];
+    uint8_t v = value;
+
+    switch (addr & 0xF) {
+    case 0x0: case 0x8:
+        if (c->mr_ptr_mr2) {
+            c->mr2 = v;
+        } else {
+            c->mr1 = v;
+            c->mr_ptr_mr2 = true;
+        }
+        break;
+    case 0x1: case 0x9:
+        c->csr = v;
+        break;
+    case 0x2: case 0xA:
+        channel_command(s, c, v);
+        break;
+    case 0x3: case 0xB:
+        channel_transmit(s, c, v);
+        break;
+    case 0x4: {
+        bool was_timer = ct_timer_mode(s);
+        s->acr = v;
+        if (ct_timer_mode(s) && !was_timer) {
+            ct_start(s);
+        } else {
+            ct_schedule(s);
+        }
+        break;
+    }
+    case 0x5:
+        s->imr = v;
+        break;
+    case 0x6:
+        s->ct_preload = (s->ct_preload & 0x00FF) | (v << 8);
+        break;
+    case 0x7:
+        s->ct_preload = (s->ct_preload & 0xFF00) | v;
+        break;
+    case 0xC:
+        s->ivr = v;
+        break;
+    case 0xD:
+        s->opcr = v;
+        break;
+    case 0xE:
+        s->opr |= v;
+        break;
+    case 0xF:
+        s->opr &= ~v;
+        break;
+    }
+    duart_update_irq(s);
+}
+
+static const MemoryRegionOps duart_ops = {
+    .read = duart_read,
+    .write = duart_write,
+    .endianness = DEVICE_BIG_ENDIAN,
+    .impl = { .min_access_size = 1, .max_access_size = 1 },
+    .valid = { .min_access_size = 1, .max_access_size = 4 },
+};
+
+/* ---- QOM ------------------------------------------------------------------ */
+
+static void duart_reset(DeviceState *dev)
+{
+    MC68681DuartState *s = MC68681_DUART(dev);
+    int i;
+
+    for (i = 0; i < 2; i++) {
+        DuartChannel *c = &s->ch[i];
+        c->mr1 = c->mr2 = 0;
+        c->mr_ptr_mr2 = false;
+        c->csr = 0;
+        c->rx_enabled = c->tx_enabled = false;
+        c->overrun = false;
+        c->rx_count = 0;
+    }
+    s->acr = 0;
+    s->imr = 0;
+    s->ivr = 0x0F;
+    s->opcr = 0;
+    s->opr = 0;
+    s->isr_latched = 0;
+    s->ipcr_delta = 0;
+    s->ct_preload = 0;
+    s->ct_running = false;
+    s->ct_start_value = 0;
+    timer_del(s->ct_timer);
+    duart_update_irq(s);
+}
+
+static void duart_get_u8(Object *obj, Visitor *v, const char *name,
+                         void *opaque, Error **errp)
+{
+    MC68681DuartState *s = MC68681_DUART(obj);
+    uint8_t value;
+
+    if (!strcmp(name, "input-port")) {
+        value = s->ip;
+    } else if (!strcmp(name, "opr")) {
+        value = s->opr;
+    } else {
+        /* Pin levels: OPR bit 1 drives the pin low. */
+        value = ~s->opr;
+    }
+    visit_type_uint8(v, name, &value, errp);
+}
+
+static void duart_set_input_port(Object *obj, Visitor *v, const char *name,
+                                 void *opaque, Error **errp)
+{
+    MC68681DuartState *s = MC68681_DUART(obj);
+    uint8_t value;
+
+    if (!visit_type_uint8(v, name, &value, errp)) {
+        return;
+    }
+    if (value > 0x3F) {
+        error_setg(errp, "input-port has 6 pins (IP0..IP5): 0..63, got %u", value);
+        return;
+    }
+    duart_set_ip(s, value);
+}
+
+static void duart_realize(DeviceState *dev, Error **errp)
+{
+    MC68681DuartState *s = MC68681_DUART(dev);
+
+    qemu_chr_fe_set_handlers(&s->ch[0].chr, duart_can_receive_a, duart_receive_a,
+                             NULL, NULL, s, NULL, true);
+    qemu_chr_fe_set_handlers(&s->ch[1].chr, duart_can_receive_b, duart_receive_b,
+                             NULL, NULL, s, NULL, true);
+}
+
+static void duart_init(Object *obj)
+{
+    MC68681DuartState *s = MC68681_DUART(obj);
+
+    memory_region_init_io(&s->iomem, obj, &duart_ops, s, "mc68681.duart", 0x10);
+    s->ct_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, ct_expire, s);
+    s->ip = 0x3F;   /* pull-ups: every input high until the host says otherwise */
+    object_property_add(obj, "input-port", "uint8", duart_get_u8,
+                        duart_set_input_port, NULL, NULL);
+    object_property_add(obj, "opr", "uint8", duart_get_u8, NULL, NULL, NULL);
+    object_property_add(obj, "output-pins", "uint8", duart_get_u8, NULL, NULL, NULL);
+}
+
+static Property duart_properties[] = {
+    DEFINE_PROP_CHR("chardev-a", MC68681DuartState, ch[0].chr),
+    DEFINE_PROP_CHR("chardev-b", MC68681DuartState, ch[1].chr),
+    DEFINE_PROP_END_OF_LIST(),
+};
+
+static void duart_class_init(ObjectClass *klass, void *data)
+{
+    DeviceClass *dc = DEVICE_CLASS(klass);
+
+    dc->realize = duart_realize;
+    dc->reset = duart_reset;
+    dc->desc = "MC68681 DUART";
+    device_class_set_props(dc, duart_properties);
+}
+
+static const TypeInfo duart_info = {
+    .name = TYPE_MC68681_DUART,
+    .parent = TYPE_SYS_BUS_DEVICE,
+    .instance_size = sizeof(MC68681DuartState),
+    .instance_init = duart_init,
+    .class_init = duart_class_init,
+};
+
+static void duart_register_types(void)
+{
+    type_register_static(&duart_info);
+}
+
+type_init(duart_register_types)
+
+DeviceState *mc68681_duart_create(MemoryRegion *bus, hwaddr base,
+                                  RoboCubeIntc *intc, Chardev *chr_a,
+                                  Chardev *chr_b)
+{
+    DeviceState *dev = qdev_new(TYPE_MC68681_DUART);
+    MC68681DuartState *s = MC68681_DUART(dev);
+
+    s->intc = intc;
+    the_duart = s;
+    qdev_prop_set_chr(dev, "chardev-a", chr_a);
+    qdev_prop_set_chr(dev, "chardev-b", chr_b);
+    object_property_add_child(qdev_get_machine(), "duart", OBJECT(dev));
+    sysbus_realize_and_unref(SYS_BUS_DEVICE(dev), &error_fatal);
+    memory_region_add_subregion(bus, base, &s->iomem);
+    return dev;
+}

@@ -1,0 +1,314 @@
+"""Test client for the robocube QEMU machine.
+
+Starts qemu-system-m68k -M robocube with
+  * the qtest protocol on a Unix socket (``-accel qtest``: the CPU does not
+    run, the test owns the virtual clock) or, with ``kernel=``, a running CPU
+    (``-accel tcg``) executing that ELF from flash,
+  * QMP on a Unix socket (``qom-get``/``qom-set`` on the board's devices),
+  * the three serial ports on Unix sockets served by this module:
+    index 0 = DUART channel B (console), 1 = DUART channel A (radio),
+    2 = QSM SCI.
+
+    with qtestlib.start() as m:
+        m.writeb(0xFFE40A, 0x05)
+        m.clock_step(1_000_000)
+        m.qom_get("/machine/duart", "opr")
+
+The QEMU binary: $BSCHED_QEMU, else ~/.cache/bsched/qemu/bin/qemu-system-m68k.
+"""
+
+import contextlib
+import os
+import shutil
+import socket
+import subprocess
+import tempfile
+import time
+
+from qemu.qmp.legacy import QEMUMonitorProtocol
+
+SERIAL_NAMES = ("console", "radio", "sci")
+SYPCR = 0xFFFA21
+
+
+def qemu_binary():
+    path = os.environ.get("BSCHED_QEMU") or os.path.join(
+        os.environ.get("BSCHED_TOOLS", os.path.expanduser("~/.cache/bsched")),
+        "qemu", "bin", "qemu-system-m68k")
+    if not os.access(path, os.X_OK):
+        raise FileNotFoundError(
+            f"{path}: qemu-system-m68k with the robocube machine is not built "
+            "(run ci/setup qemu)")
+    return path
+
+
+class QTestError(RuntimeError):
+    pass
+
+
+class SerialPort:
+    """Host end of one board serial port (a Unix stream socket)."""
+
+    def __init__(self, name, conn):
+        self.name = name
+        self.conn = conn
+        self.conn.setblocking(False)
+        self.received = bytearray()
+
+    def write(self, data):
+        self.conn.sendall(data)
+
+    def poll(self):
+        """Moves whatever QEMU has sent so far into self.received."""
+        while True:
+            try:
+                chunk = self.conn.recv(65536)
+            except BlockingIOError:
+                return
+            if not chunk:
+                return
+            self.received += chunk
+
+    def read_until(self, marker, timeout=10.0, step=None):
+        """Waits (wall time) until marker appears; returns everything up to and
+        including it and keeps the rest. step: called between polls (e.g. to
+        advance the qtest clock)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            self.poll()
+            idx = self.received.find(marker)
+            if idx >= 0:
+                out = bytes(self.received[:idx + len(marker)])
+                del self.received[:idx + len(marker)]
+                return out
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"serial {self.name}: {marker!r} not seen in "
+                                   f"{timeout} s; got {bytes(self.received)!r}")
+            if step:
+                step()
+            else:
+                time.sleep(0.01)
+
+    def read_exactly(self, count, timeout=10.0, step=None):
+        deadline = time.monotonic() + timeout
+        while True:
+            self.poll()
+            if len(self.received) >= count:
+                out = bytes(self.received[:count])
+                del self.received[:count]
+                return out
+            if time.monotonic() > deadline:
+                raise TimeoutError(f"serial {self.name}: wanted {count} bytes, "
+                                   f"got {bytes(self.received)!r}")
+            if step:
+                step()
+            else:
+                time.sleep(0.01)
+
+    def close(self):
+        self.conn.close()
+
+
+class Machine:
+    """One robocube QEMU process with qtest (optional), QMP and serial sockets."""
+
+    def __init__(self, kernel=None, qtest=None, extra_args=(), timeout=20.0,
+                 disable_watchdog=True):
+        """kernel: ELF to run (then the CPU runs, no qtest unless qtest=True).
+        disable_watchdog (qtest only): write SYPCR = 0 first, because the SIM
+        software watchdog is on at reset (15.6 ms) and would reset the board
+        during clock_step; SYPCR is write-once, so tests of SYPCR pass False."""
+        self.qtest_enabled = (kernel is None) if qtest is None else qtest
+        self.dir = tempfile.mkdtemp(prefix="robocube-")
+        self.irq_events = []            # (raise: bool, line) from irq_intercept_*
+        self._buf = b""
+        self.proc = None
+        self._qtest = None
+        self.qmp = None
+        listeners = []
+        try:
+            args = [qemu_binary(), "-M", "robocube", "-display", "none",
+                    "-nodefaults", "-monitor", "none"]
+            serial_listeners = []
+            for i, name in enumerate(SERIAL_NAMES):
+                path = os.path.join(self.dir, f"serial{i}.sock")
+                lst = self._listen(path)
+                serial_listeners.append(lst)
+                listeners.append(lst)
+                args += ["-chardev", f"socket,id=ser{i},path={path}",
+                         "-serial", f"chardev:ser{i}"]
+            qmp_path = os.path.join(self.dir, "qmp.sock")
+            self.qmp = QEMUMonitorProtocol(qmp_path, server=True)
+            args += ["-qmp", f"unix:{qmp_path}"]
+            if self.qtest_enabled:
+                qtest_path = os.path.join(self.dir, "qtest.sock")
+                qtest_listener = self._listen(qtest_path)
+                listeners.append(qtest_listener)
+                args += ["-accel", "qtest", "-qtest", f"unix:{qtest_path}"]
+            else:
+                args += ["-accel", "tcg"]
+            if kernel:
+                args += ["-kernel", str(kernel)]
+            args += list(extra_args)
+            self.args = args
+            self.stderr_path = os.path.join(self.dir, "stderr.log")
+            self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL,
+                                         stdout=subprocess.DEVNULL,
+                                         stderr=open(self.stderr_path, "w"))
+            # QEMU connects the chardevs, then qtest, then QMP, in this order.
+            self.serial = [SerialPort(name, self._accept(lst, timeout))
+                           for name, lst in zip(SERIAL_NAMES, serial_listeners)]
+            if self.qtest_enabled:
+                self._qtest = self._accept(qtest_listener, timeout)
+            self.qmp.accept(timeout)
+            if self.qtest_enabled and disable_watchdog:
+                self.writeb(SYPCR, 0x00)
+        except BaseException:
+            self.close()
+            raise
+        finally:
+            for lst in listeners:
+                lst.close()
+
+    # -- process plumbing -------------------------------------------------
+    @staticmethod
+    def _listen(path):
+        lst = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        lst.bind(path)
+        lst.listen(1)
+        return lst
+
+    def _accept(self, listener, timeout):
+        listener.settimeout(timeout)
+        try:
+            conn, _ = listener.accept()
+        except socket.timeout:
+            raise QTestError("QEMU did not connect: " + self.stderr()) from None
+        conn.settimeout(None)
+        return conn
+
+    def stderr(self):
+        try:
+            with open(self.stderr_path) as f:
+                return f.read()
+        except OSError:
+            return ""
+
+    @property
+    def console(self):
+        return self.serial[0]
+
+    @property
+    def radio(self):
+        return self.serial[1]
+
+    @property
+    def sci(self):
+        return self.serial[2]
+
+    def close(self):
+        if self._qtest:
+            self._qtest.close()
+            self._qtest = None
+        for port in getattr(self, "serial", []):
+            port.close()
+        if self.qmp:
+            try:
+                self.qmp.close()
+            except Exception:
+                pass
+            self.qmp = None
+        if self.proc:
+            if self.proc.poll() is None:
+                self.proc.kill()
+            self.proc.wait()
+            self.proc = None
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    # -- qtest protocol ----------------------------------------------------
+    def cmd(self, line):
+        """Sends one qtest command; returns the words after OK."""
+        if not self._qtest:
+            raise QTestError("qtest is not enabled on this machine")
+        self._qtest.sendall((line + "\n").encode())
+        while True:
+            while b"\n" not in self._buf:
+                chunk = self._qtest.recv(65536)
+                if not chunk:
+                    raise QTestError(f"qtest connection closed during {line!r}: "
+                                     + self.stderr())
+                self._buf += chunk
+            reply, self._buf = self._buf.split(b"\n", 1)
+            words = reply.decode().split()
+            if words[:1] == ["IRQ"]:
+                self.irq_events.append((words[1] == "raise", int(words[2])))
+                continue
+            if words[:1] != ["OK"]:
+                raise QTestError(f"qtest {line!r}: {reply.decode()}")
+            return words[1:]
+
+    def readb(self, addr):
+        return int(self.cmd(f"readb {addr:#x}")[0], 16)
+
+    def readw(self, addr):
+        return int(self.cmd(f"readw {addr:#x}")[0], 16)
+
+    def readl(self, addr):
+        return int(self.cmd(f"readl {addr:#x}")[0], 16)
+
+    def writeb(self, addr, value):
+        self.cmd(f"writeb {addr:#x} {value & 0xFF:#x}")
+
+    def writew(self, addr, value):
+        self.cmd(f"writew {addr:#x} {value & 0xFFFF:#x}")
+
+    def writel(self, addr, value):
+        self.cmd(f"writel {addr:#x} {value & 0xFFFFFFFF:#x}")
+
+    def memread(self, addr, size):
+        return bytes.fromhex(self.cmd(f"read {addr:#x} {size:#x}")[0][2:])
+
+    def memwrite(self, addr, data):
+        self.cmd(f"write {addr:#x} {len(data):#x} 0x{bytes(data).hex()}")
+
+    def clock_step(self, ns=None):
+        """Advances virtual time by ns (or to the next timer); returns the clock."""
+        return int(self.cmd("clock_step" if ns is None else f"clock_step {int(ns)}")[0])
+
+    def clock_now(self):
+        return int(self.cmd("clock_step 0")[0])
+
+    def irq_intercept_out(self, qom_path):
+        self.cmd(f"irq_intercept_out {qom_path}")
+
+    def irq_intercept_in(self, qom_path):
+        self.cmd(f"irq_intercept_in {qom_path}")
+
+    def system_reset(self):
+        self.qmp_cmd("system_reset")
+
+    # -- QMP ---------------------------------------------------------------
+    def qmp_cmd(self, name, **args):
+        return self.qmp.command(name, **args)
+
+    def qom_get(self, path, prop):
+        return self.qmp.command("qom-get", path=path, property=prop)
+
+    def qom_set(self, path, prop, value):
+        self.qmp.command("qom-set", path=path, property=prop, value=value)
+
+
+@contextlib.contextmanager
+def start(**kwargs):
+    """Context manager around Machine(**kwargs) that always stops QEMU."""
+    machine = Machine(**kwargs)
+    try:
+        yield machine
+    finally:
+        machine.close()

@@ -1,0 +1,189 @@
+"""The robocube machine with a running CPU32 (TCG): boot from the flash's
+reset alias, console output on DUART B, bus errors with the CPU32 format $C
+frame for unmapped accesses and flash writes, double bus fault halting the
+CPU without killing QEMU, and PIT interrupts acknowledged by the CPU."""
+import re
+import time
+
+import pytest
+
+import qtestlib
+
+# Common program skeleton: vector table at flash offset 0 (SSP = top of
+# TPURAM, which the first instructions map), bus error handler that prints
+# the stacked frame, and console output helpers.  FAULT is replaced.
+PROGRAM = r"""
+    .text
+    .long 0x00F20800                /* 0: SSP, top of TPURAM */
+    .long start - 0xE00000          /* 1: PC through the reset alias at 0 */
+    .long berr - 0xE00000           /* 2: bus error */
+    .org 0x100
+    .long pit - 0xE00000            /* 64: PIT */
+    .org 0x400
+start:
+    move.b  #0x00, 0xFFFA21         /* SYPCR: watchdog off */
+    move.w  #0xF200, 0xFFFB04       /* TRAMBAR: TPURAM at 0xF20000 (stack) */
+    move.b  #0x05, 0xFFE40A         /* CRB: console RX/TX on */
+    lea     hello(%pc), %a0
+    bsr     puts
+    FAULT
+    lea     after(%pc), %a0
+    bsr     puts
+halt:
+    bra     halt
+
+/* Bus error: print "BERR" and the format $C frame words. */
+berr:
+    movea.l %sp, %a1
+    lea     berrmsg(%pc), %a0
+    bsr     puts
+    moveq   #0, %d0
+    move.w  6(%a1), %d0             /* format / vector offset */
+    bsr     puthex
+    move.l  8(%a1), %d0             /* faulted address */
+    bsr     puthex
+    move.l  16(%a1), %d0            /* current instruction PC */
+    bsr     puthex
+    moveq   #0, %d0
+    move.w  22(%a1), %d0            /* special status word */
+    bsr     puthex
+    lea     eol(%pc), %a0
+    bsr     puts
+    bra     halt
+
+/* PIT: count ticks in %d7, print 'T' every 1024 (one second). */
+pit:
+    addq.l  #1, 0xF20000            /* handler entries, read by the test */
+    addq.l  #1, %d7
+    cmp.l   #1024, %d7
+    bne.s   1f
+    moveq   #0, %d7
+    move.b  #'T', %d1
+    bsr     putc
+1:  rte
+
+putc:                               /* %d1 -> console */
+    btst    #2, 0xFFE409
+    beq.s   putc
+    move.b  %d1, 0xFFE40B
+    rts
+
+puts:                               /* %a0 -> NUL-terminated string */
+    move.b  (%a0)+, %d1
+    beq.s   2f
+    bsr     putc
+    bra.s   puts
+2:  rts
+
+puthex:                             /* %d0 as " XXXXXXXX" */
+    move.b  #' ', %d1
+    bsr     putc
+    moveq   #7, %d2
+3:  rol.l   #4, %d0
+    move.b  %d0, %d1
+    and.b   #0x0F, %d1
+    add.b   #'0', %d1
+    cmp.b   #'9', %d1
+    ble.s   4f
+    add.b   #7, %d1
+4:  bsr     putc
+    dbra    %d2, 3b
+    rts
+
+hello:   .asciz "HELLO\r\n"
+after:   .asciz "AFTER\r\n"
+berrmsg: .asciz "BERR"
+eol:     .asciz "\r\n"
+"""
+
+
+def run(build_elf, fault, extra_args=()):
+    elf = build_elf(PROGRAM.replace("FAULT", fault))
+    return qtestlib.start(kernel=elf, extra_args=extra_args)
+
+
+def berr_frame(m):
+    line = m.console.read_until(b"\r\n", timeout=10).decode()
+    match = re.fullmatch(r"BERR ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8})\r\n",
+                         line)
+    assert match, line
+    return [int(x, 16) for x in match.groups()]
+
+
+def test_boot_prints_on_console(build_elf):
+    with run(build_elf, "nop") as m:
+        assert m.console.read_until(b"HELLO\r\n", timeout=10) == b"HELLO\r\n"
+        assert m.console.read_until(b"AFTER\r\n", timeout=10) == b"AFTER\r\n"
+        m.radio.poll()
+        assert m.radio.received == b""
+
+
+@pytest.mark.parametrize("fault, address, ssw", [
+    # long read from an undecoded address: RW=1, LG=1, SIZ=00, FUNC=5 (S data)
+    ("tst.l 0x00200000", 0x00200000, 0x0065),
+    # byte write to the flash (read-only chip select): RW=0, SIZ=01
+    ("move.b #1, 0x00E00010", 0x00E00010, 0x000D),
+    # word read of SRAM space above the boot flash block (CS0/CS1 not programmed)
+    ("tst.w 0x00100000", 0x00100000, 0x0055),
+    # an address above the 24-bit bus that is not the 0xFF mirror
+    ("tst.b 0x01000000", 0x01000000, 0x004D),
+])
+def test_bus_error_frame(build_elf, fault, address, ssw):
+    with run(build_elf, fault) as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        fmt, fault_addr, pc, status = berr_frame(m)
+        assert fmt == 0xC008                 # format $C, vector 2 (offset 8)
+        assert fault_addr == address
+        assert pc < 0x100000                 # running through the reset alias
+        assert status == ssw
+        assert m.qmp_cmd("query-status")["status"] == "running"
+
+
+def test_unmapped_instruction_fetch_is_a_bus_error(build_elf):
+    with run(build_elf, "jmp 0x00300000") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        fmt, fault_addr, _, status = berr_frame(m)
+        assert fmt == 0xC008
+        assert fault_addr == 0x00300000
+        assert status & 0x7 == 6             # FUNC = supervisor program
+
+
+def test_double_bus_fault_halts_cpu_not_qemu(build_elf):
+    # Stack pointer into undecoded space, then a fault: stacking the bus
+    # error frame faults again; the CPU32 halts.
+    with run(build_elf, "movea.l #0x00400000, %sp\n    tst.l 0x00200000",
+             extra_args=["-d", "guest_errors"]) as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        deadline_text = ""
+        for _ in range(200):
+            deadline_text = m.stderr()
+            if "double bus fault" in deadline_text:
+                break
+            time.sleep(0.02)
+        assert "double bus fault" in deadline_text
+        assert m.proc.poll() is None         # QEMU still alive
+        assert m.qmp_cmd("query-status")["status"] == "running"
+        m.console.poll()
+        assert b"BERR" not in m.console.received
+
+
+def test_pit_interrupts_acknowledged_by_cpu(build_elf):
+    """PIT at level 4 / vector 64, 1024 Hz, under -icount (deterministic
+    virtual time whatever the host load): the handler counts its entries in
+    TPURAM and prints 'T' every 1024.  Each PIT period must enter the handler
+    exactly once: the interrupt-acknowledge cycle clears the request (without
+    it the CPU would re-enter the handler back to back)."""
+    setup = ("clr.l 0xF20000\n"
+             "    move.w #0x0440, 0xFFFA22\n"  # PICR
+             "    move.w #0x0008, 0xFFFA24\n"  # PITR: 976.5625 us
+             "    moveq #0, %d7\n"
+             "    move.w #0x2000, %sr")
+    with run(build_elf, setup, extra_args=["-icount", "shift=6,sleep=off"]) as m:
+        m.console.read_until(b"AFTER\r\n", timeout=10)
+        m.console.read_until(b"TT", timeout=60)
+        m.qmp_cmd("stop")
+        ticks = m.qom_get("/machine/sim", "pit-count")
+        out = m.qmp_cmd("human-monitor-command", **{"command-line": "xp /1wx 0xF20000"})
+        entries = int(out.split(":")[1].split()[0], 16)
+        assert ticks >= 2048
+        assert entries in (ticks, ticks - 1), (entries, ticks)

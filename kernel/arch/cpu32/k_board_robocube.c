@@ -1,0 +1,132 @@
+/*
+ * Board glue of the nanokernel on the RoboCube (see k_board.h).
+ *
+ * Console output: threads put bytes into a ring; the DUART's TxRDYB
+ * interrupt (level 5, vectored through IVR) moves them to the transmitter
+ * and masks itself when the ring runs dry. A thread that finds the ring
+ * full waits on a semaphore the interrupt posts; a handler (or code before
+ * k_start) cannot wait, so its surplus is dropped and counted. LF goes out
+ * as CR LF, as with the firmware's polled console. Fault reports use
+ * k_console_write_sync: it drains the ring and sends by polling, with
+ * interrupts masked, so they get out even when the system is wedged.
+ */
+#include "k_internal.h"
+#include "k_board.h"
+#include "cpu.h"
+#include "drivers/mc68681.h"
+#include "drivers/duart_console.h"
+#include "drivers/pit.h"
+
+#define DUART_IMR_TXRDYB 0x10u
+#define DUART_ISR_TXRDYB 0x10u
+
+void (*volatile k_board_tick_callback)(void);
+
+static uint8_t k_console_buf[K_BOARD_CONSOLE_RING];
+static struct k_ring k_console_ring;
+static struct k_sem k_console_space;
+static uint8_t k_duart_imr;      /* IMR is write-only: its shadow */
+static int k_console_lf_held;    /* CR sent, LF still to send */
+static uint32_t k_console_drops;
+
+static void k_duart_set_imr(uint8_t imr)
+{
+    k_duart_imr = imr;
+    DUART_REG(DUART_IMR) = imr;
+}
+
+/* Feeds the transmitter while it is ready and there is something to send.
+ * Interrupts masked (handler or caller). Returns whether the ring is empty. */
+static int k_console_feed(void)
+{
+    while ((DUART_REG(DUART_SRB) & DUART_SR_TXRDY) != 0u) {
+        uint8_t b;
+        if (k_console_lf_held) {
+            k_console_lf_held = 0;
+            DUART_REG(DUART_TBB) = '\n';
+            continue;
+        }
+        if (!k_ring_get(&k_console_ring, &b))
+            return 1;
+        if (b == '\n') {
+            k_console_lf_held = 1;
+            b = '\r';
+        }
+        DUART_REG(DUART_TBB) = b;
+    }
+    return 0;
+}
+
+static void k_duart_isr(void *arg)
+{
+    (void)arg;
+    if ((DUART_REG(DUART_ISR) & DUART_ISR_TXRDYB & k_duart_imr) != 0u) {
+        if (k_console_feed() && !k_console_lf_held)
+            k_duart_set_imr((uint8_t)(k_duart_imr & ~DUART_IMR_TXRDYB));
+        if (k_waitq_first(&k_console_space.wq) != NULL)
+            (void)k_sem_post(&k_console_space);
+    }
+}
+
+size_t k_console_write(const char *s, size_t len)
+{
+    size_t done = 0;
+    int can_wait = k_kernel.started && !k_in_isr();
+    while (done < len) {
+        uint32_t irq = k_arch_irq_save();
+        int put = k_ring_put(&k_console_ring, (uint8_t)s[done]);
+        if ((k_duart_imr & DUART_IMR_TXRDYB) == 0u)
+            k_duart_set_imr((uint8_t)(k_duart_imr | DUART_IMR_TXRDYB));
+        k_arch_irq_restore(irq);
+        if (put) {
+            done++;
+        } else if (can_wait && irq == 0u) {
+            (void)k_sem_wait(&k_console_space);
+        } else {
+            k_console_drops += (uint32_t)(len - done);
+            break;
+        }
+    }
+    return done;
+}
+
+void k_console_write_sync(const char *s, size_t len)
+{
+    uint32_t irq = k_arch_irq_save();
+    while (!k_console_feed() || k_console_lf_held) {
+        /* drain what was queued first, so the report comes out in order */
+    }
+    console_write(s, len);
+    k_arch_irq_restore(irq);
+}
+
+uint32_t k_board_console_dropped(void)
+{
+    return k_console_drops;
+}
+
+static void k_board_tick(uint32_t ticks)
+{
+    void (*cb)(void);
+    (void)ticks;
+    k_isr_enter();
+    k_tick();
+    cb = k_board_tick_callback;
+    if (cb != NULL)
+        cb();
+    k_isr_exit();
+}
+
+int k_board_init(void)
+{
+    console_init(); /* channel B at 57600 8N1, all DUART interrupts masked */
+    (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
+    (void)k_sem_init(&k_console_space, 0, 1);
+    k_console_lf_held = 0;
+    k_console_drops = 0;
+    k_duart_imr = 0;
+    DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
+    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK)
+        return -1;
+    return pit_start(K_TICK_HZ, k_board_tick);
+}

@@ -1,0 +1,30 @@
+/*
+ * Board glue of the nanokernel on the RoboCube (kernel/arch/cpu32/
+ * k_board_robocube.c): the PIT drives k_tick, the console on DUART
+ * channel B becomes interrupt-driven behind a ring buffer.
+ */
+#ifndef K_BOARD_H
+#define K_BOARD_H
+
+#include <stdint.h>
+
+/* DUART interrupt vector (written to IVR); level 5 is wired on the board. */
+#define K_BOARD_DUART_VECTOR 72u
+#define K_BOARD_DUART_LEVEL   5u
+/* Console transmit ring, bytes (power of two). */
+#define K_BOARD_CONSOLE_RING 1024u
+
+/* After k_init: programs the console (interrupt-driven output) and starts
+ * the PIT at K_TICK_HZ. Ticks are counted once interrupts are enabled,
+ * i.e. when k_start runs the first thread. Returns 0, or -1 when the PIT
+ * cannot make K_TICK_HZ. */
+int k_board_init(void);
+
+/* Called in the tick interrupt after k_tick (tests and measurements). */
+extern void (*volatile k_board_tick_callback)(void);
+
+/* Console bytes dropped because the ring was full where waiting is not
+ * allowed (interrupt handlers, before k_start). */
+uint32_t k_board_console_dropped(void);
+
+#endif /* K_BOARD_H */

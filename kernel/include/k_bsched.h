@@ -1,0 +1,50 @@
+/*
+ * The B-scheduler thread: runs one bsched minor cycle every `period` ticks
+ * at the highest application priority (K_PRIO_APP_MAX), released at
+ * absolute ticks start + k*period so it never drifts.
+ *
+ * Overrun: a minor cycle still running when the next release is due. Each
+ * missed release is counted; the late cycle's successor starts at the next
+ * release still ahead (missed releases are not run back to back, which would
+ * only make the lateness worse). Overruns are reported on the console by a
+ * reporter thread just below the B-scheduler thread's priority, so that the
+ * report (about a millisecond of output formatting) never delays a cycle;
+ * its line names the overrun cycle, how late it ended and the totals.
+ */
+#ifndef K_BSCHED_H
+#define K_BSCHED_H
+
+#include "kernel.h"
+#include "bsched.h"
+
+struct k_bsched {
+    struct k_thread thread;
+    struct bsched *sched;
+    bsched_process_fn run;
+    void *context;
+    k_ticks_t period;          /* ticks per minor cycle */
+    k_ticks_t next_release;    /* absolute tick of the next minor cycle */
+    uint32_t cycles_run;       /* minor cycles executed */
+    uint32_t overruns;         /* releases missed because a cycle ran late */
+    uint32_t overrun_events;   /* cycles that overran (reports printed) */
+    uint32_t max_cycle_ticks;  /* longest minor cycle, in ticks */
+    uint32_t stop_after;       /* stop after this many cycles (0 = never) */
+    volatile int stop;         /* set to end the thread after this cycle */
+    /* reporting */
+    uint32_t last_overrun_cycle;  /* cycles_run index of the last overrun */
+    uint32_t last_overrun_late;   /* ticks its end was past the release */
+    uint32_t reported_events;     /* overrun events printed so far */
+    int finished;
+    struct k_sem report_sem;
+    struct k_thread reporter;
+    uint32_t reporter_stack[K_STACK_WORDS(768u)] __attribute__((aligned(4)));
+};
+
+/* Starts the thread (and its reporter). s must be planned (bsched_init);
+ * period >= 1 tick; set b->stop_after before (0 = run for ever). The first
+ * cycle runs at the next tick. Returns K_OK or K_EINVAL. When the thread
+ * stops, it waits until every overrun has been reported. */
+int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, void *context,
+                   k_ticks_t period, uint32_t *stack, size_t stack_bytes);
+
+#endif /* K_BSCHED_H */

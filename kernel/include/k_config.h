@@ -1,0 +1,44 @@
+/*
+ * Configuration of the nanokernel: the one place for tick rate, priorities,
+ * slice length and stack guards. The board side (clock rate, PIT divider,
+ * which services start) lives in the firmware's board configuration; the
+ * tick rate here must match what the PIT is programmed to.
+ */
+#ifndef K_CONFIG_H
+#define K_CONFIG_H
+
+/* Tick rate: the 68332 PIT from the 32.768 kHz reference with PITM=8 gives
+ * 1024 Hz (976.5625 us), the closest it gets to a millisecond. Must divide
+ * 2 000 000 000 so that clock_gettime needs no 64-bit division. */
+#ifndef K_TICK_HZ
+#define K_TICK_HZ 1024u
+#endif
+
+/* Round-robin slice within a priority, in ticks. */
+#ifndef K_TIMESLICE_TICKS
+#define K_TIMESLICE_TICKS 10u
+#endif
+
+#define K_PRIO_IDLE         0u
+#define K_PRIO_APP_MIN      1u
+#define K_PRIO_APP_MAX     27u  /* the B-scheduler thread */
+#define K_PRIO_SERVICE_MIN 28u  /* communication and other kernel services */
+#define K_PRIO_MAX         31u
+
+/* Words at the low end of every stack filled with K_STACK_GUARD and checked
+ * on every switch away from the thread. */
+#ifndef K_STACK_GUARD_WORDS
+#define K_STACK_GUARD_WORDS 4u
+#endif
+#define K_STACK_GUARD 0xDEADC0DEu
+
+/* The smallest stack k_thread_create accepts, in bytes. */
+#ifndef K_STACK_MIN_BYTES
+#define K_STACK_MIN_BYTES 256u
+#endif
+
+#ifndef K_IDLE_STACK_BYTES
+#define K_IDLE_STACK_BYTES 512u
+#endif
+
+#endif /* K_CONFIG_H */

@@ -1,0 +1,97 @@
+# The nanokernel: host unit tests (cmocka, on the ucontext port), the CPU32
+# build, the target test images and their pytest suite, and the size report.
+#
+#   make kernel-host-tests     build/kernel/tests/test_k_struct, test_k_threads
+#   make check-kernel-unit     run them (strict HOST_CFLAGS)
+#   make kernel-target         build/kernel/target/ktest.elf (all target tests in one image)
+#   make check-kernel-target   boot it once per test mode on qemu -M robocube, judged by pytest
+#   make kernel-size           kernel text size for CPU32 at -Os
+
+K_BUILD      := $(BUILD)/kernel
+K_CORE_SRCS  := kernel/k_struct.c kernel/k_sched.c kernel/k_sync.c kernel/k_mq.c \
+                kernel/k_irq.c kernel/k_fmt.c kernel/k_bsched.c
+K_HEADERS    := $(wildcard kernel/include/*.h) kernel/k_internal.h
+K_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
+                 -I$(ROOT)/kernel/tests/host/arch -I$(ROOT)/bsched
+K_HOST_PORT  := kernel/tests/host/arch/k_arch_host.c
+K_HOST_TESTS := $(K_BUILD)/tests/test_k_struct $(K_BUILD)/tests/test_k_threads
+
+ALL += $(K_HOST_TESTS)
+CHECKS += kernel-unit
+
+.PHONY: kernel-host-tests check-kernel-unit
+kernel-host-tests: $(K_HOST_TESTS)
+
+$(K_BUILD)/tests/test_k_%: kernel/tests/host/test_k_%.c $(K_CORE_SRCS) $(K_HOST_PORT) \
+                           bsched/bsched.c $(K_HEADERS) kernel/tests/host/arch/*.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(K_HOST_CFLAGS) -o $@ $< $(K_CORE_SRCS) $(K_HOST_PORT) bsched/bsched.c -lcmocka
+
+check-kernel-unit: $(K_HOST_TESTS)
+	@$(SETUP) base
+	@p=0; f=0; rc=0; \
+	for t in $(K_HOST_TESTS); do \
+	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
+	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
+	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	done; \
+	$(call record,kernel-unit,$$p,$$f); [ $$rc -eq 0 ]
+
+# ---- CPU32 target ----
+K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -ffunction-sections \
+                  -fdata-sections -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
+                  -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched -I$(ROOT) \
+                  -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -MMD -MP
+K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c kernel/arch/cpu32/k_board_robocube.c
+K_TARGET_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(K_TARGET_SRCS)) \
+                 $(K_BUILD)/target/obj/kernel/arch/cpu32/switch.S.o
+# Test modes of kernel/tests/target-kernel/ktest.c (KTEST_MODE = position).
+K_TEST_MODES := preempt priority semaphore inherit queue drift overrun stackguard baduse measure
+K_TEST_ELFS  := $(patsubst %,$(K_BUILD)/target/ktest-%.elf,$(K_TEST_MODES))
+k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
+
+CHECKS += kernel-target
+
+.PHONY: kernel-target check-kernel-target kernel-size
+kernel-target: $(K_TEST_ELFS)
+
+$(K_BUILD)/target/obj/%.c.o: %.c
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(K_CROSS_CFLAGS) -c -o $@ $<
+
+$(K_BUILD)/target/obj/%.S.o: %.S
+	@mkdir -p $(@D)
+	$(CROSS_CC) -mcpu=cpu32 -g -c -o $@ $<
+
+$(K_BUILD)/target/ktest-%.o: kernel/tests/target-kernel/ktest.c
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(K_CROSS_CFLAGS) -DKTEST_MODE=$(call k_mode_index,$*) -c -o $@ $<
+
+$(K_BUILD)/target/ktest-%.elf: $(K_BUILD)/target/ktest-%.o $(K_TARGET_OBJS) $(FW_BASE_OBJS) $(FW_LDSCRIPT)
+	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) $(K_TARGET_OBJS) $<
+
+.PRECIOUS: $(K_BUILD)/target/ktest-%.o
+
+# Dependency files are only read, never remade (no built-in rule may try).
+K_DEP_FILES := $(shell find $(K_BUILD)/target -name '*.d' 2>/dev/null)
+$(K_DEP_FILES): ;
+-include $(K_DEP_FILES)
+
+check-kernel-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory kernel-target
+	@BSCHED_QEMU=$(QEMU_M68K) K_TARGET_DIR=$(K_BUILD)/target CROSS_PREFIX=m68k-linux-gnu- \
+	    ci/pytest-suite kernel-target kernel/tests/target-kernel
+
+# Text bytes (code + constants) of the kernel and bsched.c for CPU32 at -Os:
+# every kernel object whole, then what one linked test image keeps.
+K_SIZE_OBJS := $(filter-out %/switch.S.o,$(K_TARGET_OBJS)) $(K_BUILD)/target/obj/kernel/arch/cpu32/switch.S.o
+kernel-size: $(K_TEST_ELFS)
+	@echo "== kernel objects (all services, nothing garbage-collected), m68k-linux-gnu-size:"
+	@$(CROSS_SIZE) $(K_SIZE_OBJS) $(FW_BUILD)/obj/bsched/bsched.c.o | awk \
+	    'NR>1 { t += $$1; if ($$6 !~ /\/bsched\/bsched\.c\.o$$/) k += $$1 } { print } \
+	     END { printf "kernel text %d bytes, kernel + bsched.c %d bytes (goal < 16384)\n", k, t }'
+	@echo "== linked into ktest-overrun.elf (threads, sleep, bsched thread, console):"
+	@$(PYTHON) kernel/tests/target-kernel/ksize.py $(K_BUILD)/target/ktest-overrun.map

@@ -1,0 +1,930 @@
+/*
+ * Host unit tests of the kernel's thread services on the ucontext port.
+ * Threads record what they see in globals; the assertions run after
+ * k_start returns (when every thread is dead or blocked forever). Time
+ * passes only through ticks: host_tick() in a busy thread is a tick
+ * interrupt at that point, and the idle thread ticks while timers pend.
+ */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+#include "kernel.h"
+#include "k_bsched.h"
+#include "host_port.h"
+
+#define STACK_BYTES (64u * 1024u)
+#define NTHREADS 6
+static uint32_t stacks[NTHREADS][STACK_BYTES / 4u];
+static struct k_thread th[NTHREADS];
+
+/* Event log: which thread did what, in order. */
+static char trace[256];
+static size_t trace_len;
+static void mark(char c)
+{
+    if (trace_len + 1u < sizeof trace) {
+        trace[trace_len++] = c;
+        trace[trace_len] = '\0';
+    }
+}
+
+static int rc[8];
+static k_ticks_t when[8];
+
+static int setup(void **state)
+{
+    (void)state;
+    memset(rc, 0, sizeof rc);
+    memset(when, 0, sizeof when);
+    k_init();
+    memset(th, 0, sizeof th);
+    trace_len = 0;
+    trace[0] = '\0';
+    host_console_clear();
+    return 0;
+}
+
+static int spawn(int i, const char *name, k_thread_fn fn, void *arg, unsigned prio)
+{
+    return k_thread_create(&th[i], name, fn, arg, stacks[i], STACK_BYTES, prio);
+}
+
+/* ---- creation and argument checks ---- */
+
+static void *noop(void *arg)
+{
+    return arg;
+}
+
+static void test_create_rejects_bad_arguments(void **state)
+{
+    (void)state;
+    assert_int_equal(k_thread_create(NULL, "x", noop, NULL, stacks[0], STACK_BYTES, 5), K_EINVAL);
+    assert_int_equal(k_thread_create(&th[0], "x", NULL, NULL, stacks[0], STACK_BYTES, 5), K_EINVAL);
+    assert_int_equal(k_thread_create(&th[0], "x", noop, NULL, stacks[0], 16, 5), K_EINVAL);
+    assert_int_equal(k_thread_create(&th[0], "x", noop, NULL, stacks[0], STACK_BYTES, 0), K_EINVAL);
+    assert_int_equal(k_thread_create(&th[0], "x", noop, NULL, stacks[0], STACK_BYTES, 32), K_EINVAL);
+    assert_int_equal(spawn(0, "x", noop, NULL, 5), K_OK);
+    assert_int_equal(spawn(0, "x", noop, NULL, 5), K_EINVAL); /* still live */
+}
+
+/* ---- priority order ---- */
+
+static void *tracer(void *arg)
+{
+    mark(*(const char *)arg);
+    return NULL;
+}
+
+static void test_priority_order(void **state)
+{
+    (void)state;
+    spawn(0, "low", tracer, "L", 3);
+    spawn(1, "high", tracer, "H", 20);
+    spawn(2, "mid", tracer, "M", 10);
+    spawn(3, "mid2", tracer, "m", 10);
+    k_start();
+    assert_string_equal(trace, "HMmL");
+}
+
+/* A thread that creates a more urgent one is pre-empted at once. */
+static void *creator(void *arg)
+{
+    (void)arg;
+    mark('a');
+    spawn(1, "urgent", tracer, "U", 25);
+    mark('b');
+    return NULL;
+}
+
+static void test_create_preempts(void **state)
+{
+    (void)state;
+    spawn(0, "creator", creator, NULL, 5);
+    k_start();
+    assert_string_equal(trace, "aUb");
+}
+
+/* ---- pre-emption by the tick: round robin among busy threads ---- */
+
+static volatile int spin_stop;
+static uint32_t spin_count[3];
+
+static void *busy(void *arg)
+{
+    int i = (int)(intptr_t)arg;
+    while (!spin_stop) {
+        spin_count[i]++;
+        if (spin_count[i] % 10u == 0u)
+            mark((char)('0' + i));
+        host_tick(); /* a tick interrupt lands here */
+        if (k_ticks() >= 95u)
+            spin_stop = 1;
+    }
+    return NULL;
+}
+
+static void test_timeslice_round_robin(void **state)
+{
+    (void)state;
+    spin_stop = 0;
+    memset(spin_count, 0, sizeof spin_count);
+    spawn(0, "busy0", busy, (void *)0, 5);
+    spawn(1, "busy1", busy, (void *)1, 5);
+    spawn(2, "busy2", busy, (void *)2, 5);
+    k_start();
+    /* slices of K_TIMESLICE_TICKS ticks, taken in turn */
+    assert_true(spin_count[0] >= 30u && spin_count[1] >= 30u && spin_count[2] >= 30u);
+    assert_memory_equal(trace, "012012012", 9);
+    assert_true(k_stats.context_switches >= 9u);
+}
+
+/* A more urgent thread that wakes from sleep pre-empts a busy one at the tick. */
+static uint32_t woke_at;
+static void *sleeper(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(7);
+    woke_at = k_ticks();
+    mark('S');
+    return NULL;
+}
+
+static void *busy_until(void *arg)
+{
+    (void)arg;
+    while (k_ticks() < 20u) {
+        if (k_ticks() == 6u)
+            mark('b');
+        host_tick();
+    }
+    mark('B');
+    return NULL;
+}
+
+static void test_preemption_of_busy_thread(void **state)
+{
+    (void)state;
+    spawn(0, "busy", busy_until, NULL, 4);
+    spawn(1, "sleeper", sleeper, NULL, 9);
+    k_start();
+    assert_int_equal(woke_at, 7);
+    assert_string_equal(trace, "bSB");
+}
+
+/* ---- yield ---- */
+static void *yielder(void *arg)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        mark(*(const char *)arg);
+        k_sched_yield();
+    }
+    return NULL;
+}
+
+static void test_yield_round_robin(void **state)
+{
+    (void)state;
+    spawn(0, "a", yielder, "a", 5);
+    spawn(1, "b", yielder, "b", 5);
+    k_start();
+    assert_string_equal(trace, "ababab");
+}
+
+/* ---- sleeping and time ---- */
+
+static uint32_t drift_max;
+static void *periodic(void *arg)
+{
+    k_ticks_t next = k_ticks();
+    int i;
+    (void)arg;
+    for (i = 0; i < 10000; i++) {
+        next += 3u;
+        k_sleep_until(next);
+        if (k_ticks() - next > drift_max)
+            drift_max = k_ticks() - next;
+        if (i % 7 == 0) /* work that takes up to 2 ticks must not add drift */
+            host_tick(), host_tick();
+    }
+    return NULL;
+}
+
+static void test_sleep_until_no_drift(void **state)
+{
+    (void)state;
+    drift_max = 0;
+    spawn(0, "periodic", periodic, NULL, 10);
+    k_start();
+    assert_int_equal(drift_max, 0);
+    assert_int_equal(k_ticks(), 30000);
+}
+
+static struct k_timespec ts_seen;
+static uint32_t ms_seen;
+static int nanosleep_rc;
+static void *timekeeper(void *arg)
+{
+    struct k_timespec req = {1, 500000000};
+    (void)arg;
+    nanosleep_rc = k_nanosleep(&req);
+    k_clock_gettime(K_CLOCK_MONOTONIC, &ts_seen);
+    ms_seen = k_uptime_ms();
+    return NULL;
+}
+
+static void test_nanosleep_and_clock(void **state)
+{
+    struct k_timespec bad = {0, 1000000000};
+    (void)state;
+    spawn(0, "time", timekeeper, NULL, 10);
+    k_start();
+    assert_int_equal(nanosleep_rc, K_OK);
+    /* 1.5 s = 1536 ticks, +1 for the running tick */
+    assert_int_equal(k_ticks(), 1537);
+    assert_int_equal(ts_seen.tv_sec, 1);
+    assert_int_equal(ts_seen.tv_nsec, 513 * 1953125 / 2); /* 513 ticks into the second */
+    assert_int_equal(ms_seen, 1000u + 513u * 1000u / 1024u);
+    assert_int_equal(k_nanosleep(&bad), K_EINVAL);
+    assert_int_equal(k_clock_gettime(0, &ts_seen), K_EINVAL);
+    assert_int_equal(k_ms_to_ticks(1000), 1024);
+    assert_int_equal(k_ms_to_ticks(1), 2);
+    assert_int_equal(k_ms_to_ticks(0), 0);
+}
+
+static k_ticks_t abs_woke;
+static void *abs_sleeper(void *arg)
+{
+    struct k_timespec t = {2, 0};
+    (void)arg;
+    k_clock_nanosleep(K_CLOCK_MONOTONIC, K_TIMER_ABSTIME, &t);
+    abs_woke = k_ticks();
+    return NULL;
+}
+
+static void test_clock_nanosleep_absolute(void **state)
+{
+    (void)state;
+    spawn(0, "abs", abs_sleeper, NULL, 10);
+    k_start();
+    assert_int_equal(abs_woke, 2048);
+}
+
+/* ---- semaphores ---- */
+
+static struct k_sem sem;
+
+static void *sem_waiter_timeout(void *arg)
+{
+    (void)arg;
+    rc[0] = k_sem_wait_ticks(&sem, 50);
+    when[0] = k_ticks();
+    rc[1] = k_sem_trywait(&sem);
+    return NULL;
+}
+
+static void test_sem_timeout(void **state)
+{
+    (void)state;
+    k_sem_init(&sem, 0, 10);
+    spawn(0, "w", sem_waiter_timeout, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_ETIMEDOUT);
+    assert_int_equal(when[0], 50);
+    assert_int_equal(rc[1], K_EAGAIN);
+}
+
+static void *sem_poster(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(5);
+    mark('p');
+    rc[2] = k_sem_post(&sem);
+    mark('q');
+    return NULL;
+}
+
+static void *sem_waiter(void *arg)
+{
+    mark(*(const char *)arg);
+    rc[*(const char *)arg == 'A' ? 0 : 1] = k_sem_wait(&sem);
+    mark((char)(*(const char *)arg + 32));
+    return NULL;
+}
+
+static void test_sem_handoff_order(void **state)
+{
+    (void)state;
+    k_sem_init(&sem, 0, 10);
+    spawn(0, "A", sem_waiter, "A", 8);
+    spawn(1, "B", sem_waiter, "B", 12);
+    spawn(2, "poster", sem_poster, NULL, 10);
+    k_start();
+    /* B (more urgent) gets the unit and pre-empts the poster; A waits forever */
+    assert_string_equal(trace, "BApbq");
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(rc[2], K_OK);
+    assert_int_equal(th[0].state, K_THREAD_BLOCKED);
+    assert_int_equal(sem.count, 0);
+}
+
+static void *sem_timed_abs(void *arg)
+{
+    struct k_timespec abs = {0, 100000000}; /* 0.1 s = 102.4 ticks -> 103 */
+    (void)arg;
+    rc[0] = k_sem_timedwait(&sem, &abs);
+    when[0] = k_ticks();
+    return NULL;
+}
+
+static void test_sem_timedwait_absolute(void **state)
+{
+    int32_t v = -1;
+    (void)state;
+    k_sem_init(&sem, 0, 1);
+    spawn(0, "t", sem_timed_abs, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_ETIMEDOUT);
+    assert_int_equal(when[0], 103);
+    assert_int_equal(k_sem_post(&sem), K_OK);
+    assert_int_equal(k_sem_post(&sem), K_EOVERFLOW);
+    assert_int_equal(k_sem_getvalue(&sem, &v), K_OK);
+    assert_int_equal(v, 1);
+    assert_int_equal(k_sem_init(&sem, 2, 1), K_EINVAL);
+    assert_int_equal(k_sem_post(NULL), K_EINVAL);
+}
+
+/* ---- interrupts ---- */
+
+static void isr_posts(void *arg)
+{
+    struct k_sem *s = arg;
+    rc[4] = k_sem_wait_ticks(s, 10);       /* waiting in a handler: refused */
+    rc[5] = k_sem_post(s);
+    rc[6] = k_mutex_lock(NULL) == K_EINVAL && k_in_isr();
+    mark('i');
+}
+
+static void *isr_waiter(void *arg)
+{
+    (void)arg;
+    rc[0] = k_sem_wait(&sem);
+    mark('w');
+    return NULL;
+}
+
+static void *irq_raiser(void *arg)
+{
+    (void)arg;
+    mark('r');
+    host_raise_irq(70);
+    mark('R');
+    return NULL;
+}
+
+static void test_irq_wakes_thread(void **state)
+{
+    (void)state;
+    k_sem_init(&sem, 0, 5);
+    assert_int_equal(k_irq_register(70, 4, isr_posts, &sem), K_OK);
+    assert_int_equal(host_irq_routed[70] > 0u, 1);
+    assert_int_equal(k_irq_register(40, 4, isr_posts, &sem), K_EINVAL);
+    assert_int_equal(k_irq_register(70, 8, isr_posts, &sem), K_EINVAL);
+    spawn(0, "waiter", isr_waiter, NULL, 15);
+    spawn(1, "raiser", irq_raiser, NULL, 5);
+    k_start();
+    /* the handler runs, and the woken thread pre-empts at handler exit */
+    assert_string_equal(trace, "riwR");
+    assert_int_equal(rc[4], K_EISR);
+    assert_int_equal(rc[5], K_OK);
+    assert_int_equal(rc[0], K_OK);
+    host_raise_irq(99); /* nothing registered */
+    assert_int_equal(k_stats.spurious_irqs, 1);
+}
+
+/* ---- mutexes ---- */
+
+static struct k_mutex mtx, mtx2;
+
+static void *mutex_misuser(void *arg)
+{
+    (void)arg;
+    rc[0] = k_mutex_unlock(&mtx);      /* not locked by us */
+    rc[1] = k_mutex_lock(&mtx);
+    rc[2] = k_mutex_lock(&mtx);        /* relock */
+    rc[3] = k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void *mutex_holder_forever(void *arg)
+{
+    (void)arg;
+    k_mutex_lock(&mtx);
+    k_sleep_ticks(1000);
+    return NULL;
+}
+
+static void *mutex_stranger(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(1);
+    rc[4] = k_mutex_unlock(&mtx);      /* held by another thread */
+    rc[5] = k_mutex_trylock(&mtx);
+    rc[6] = k_mutex_lock_ticks(&mtx, 20);
+    when[6] = k_ticks();
+    return NULL;
+}
+
+static void test_mutex_owner_checks(void **state)
+{
+    (void)state;
+    k_mutex_init(&mtx);
+    spawn(0, "misuser", mutex_misuser, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_EPERM);
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(rc[2], K_EDEADLK);
+    assert_int_equal(rc[3], K_OK);
+    setup(NULL);
+    k_mutex_init(&mtx);
+    spawn(0, "holder", mutex_holder_forever, NULL, 10);
+    spawn(1, "stranger", mutex_stranger, NULL, 10);
+    k_start();
+    assert_int_equal(rc[4], K_EPERM);
+    assert_int_equal(rc[5], K_EBUSY);
+    assert_int_equal(rc[6], K_ETIMEDOUT);
+    assert_int_equal(when[6], 21);
+}
+
+/* Classic inversion: low holds, high waits, medium is busy. With inheritance
+ * low runs at high's priority and releases before medium gets the CPU. */
+static uint8_t low_prio_seen;
+static void *pi_low(void *arg)
+{
+    (void)arg;
+    k_mutex_lock(&mtx);
+    mark('l');
+    k_sleep_ticks(2); /* high and medium wake meanwhile */
+    low_prio_seen = th[0].prio;
+    mark('L');
+    k_mutex_unlock(&mtx);
+    mark('u');
+    return NULL;
+}
+
+static void *pi_high(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(1);
+    mark('h');
+    rc[0] = k_mutex_lock(&mtx);
+    mark('H');
+    k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void *pi_medium(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(1);
+    mark('m');
+    while (k_ticks() < 50u)
+        host_tick();
+    mark('M');
+    return NULL;
+}
+
+static void test_priority_inheritance(void **state)
+{
+    (void)state;
+    k_mutex_init(&mtx);
+    spawn(0, "low", pi_low, NULL, 3);
+    spawn(1, "high", pi_high, NULL, 20);
+    spawn(2, "medium", pi_medium, NULL, 10);
+    k_start();
+    assert_int_equal(low_prio_seen, 20);
+    assert_int_equal(rc[0], K_OK);
+    /* h blocks, m spins, but l (boosted) pre-empts m at the tick of its
+     * wake-up, releases, H runs, then m finishes, then l's tail. */
+    assert_string_equal(trace, "lhmLHMu");
+    assert_int_equal(th[0].prio, 3);
+}
+
+/* Inheritance through a chain: high waits on mtx2 held by mid, who waits on
+ * mtx held by low. Low must run at high's priority. Then a timeout of
+ * high's wait takes the boost away again. */
+static uint8_t chain_seen[3];
+static void *chain_low(void *arg)
+{
+    (void)arg;
+    k_mutex_lock(&mtx);
+    k_sleep_ticks(3);
+    chain_seen[0] = th[0].prio;
+    k_sleep_ticks(10);                 /* high's wait times out meanwhile */
+    chain_seen[1] = th[0].prio;
+    k_mutex_unlock(&mtx);
+    chain_seen[2] = th[0].prio;
+    return NULL;
+}
+
+static void *chain_mid(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(1);
+    k_mutex_lock(&mtx2);
+    rc[1] = k_mutex_lock(&mtx);
+    k_mutex_unlock(&mtx);
+    k_mutex_unlock(&mtx2);
+    return NULL;
+}
+
+static void *chain_high(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(2);
+    rc[2] = k_mutex_lock_ticks(&mtx2, 5);
+    return NULL;
+}
+
+static void test_priority_inheritance_chain_and_timeout(void **state)
+{
+    (void)state;
+    k_mutex_init(&mtx);
+    k_mutex_init(&mtx2);
+    spawn(0, "low", chain_low, NULL, 2);
+    spawn(1, "mid", chain_mid, NULL, 8);
+    spawn(2, "high", chain_high, NULL, 16);
+    k_start();
+    assert_int_equal(chain_seen[0], 16); /* through mid */
+    assert_int_equal(chain_seen[1], 8);  /* high gave up: only mid's boost left */
+    assert_int_equal(chain_seen[2], 2);
+    assert_int_equal(rc[2], K_ETIMEDOUT);
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(th[1].prio, 8);
+}
+
+static void *dies_holding(void *arg)
+{
+    (void)arg;
+    k_mutex_lock(&mtx);
+    return NULL;
+}
+
+static void *inherits_dead(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(1);
+    rc[0] = k_mutex_lock(&mtx);
+    rc[1] = k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void *dies_holding_later(void *arg)
+{
+    (void)arg;
+    k_mutex_lock(&mtx);
+    k_sleep_ticks(3);
+    return NULL;
+}
+
+static void test_mutex_owner_dies(void **state)
+{
+    (void)state;
+    /* nobody waiting when the owner dies: the next locker is told */
+    k_mutex_init(&mtx);
+    spawn(0, "dies", dies_holding, NULL, 10);
+    spawn(1, "next", inherits_dead, NULL, 5);
+    k_start();
+    assert_int_equal(rc[0], K_EOWNERDEAD);
+    assert_int_equal(rc[1], K_OK);
+    assert_null(mtx.owner);
+    /* a waiter when the owner dies: it gets the mutex and the news */
+    setup(NULL);
+    k_mutex_init(&mtx);
+    spawn(0, "dies", dies_holding_later, NULL, 10);
+    spawn(1, "next", inherits_dead, NULL, 5);
+    k_start();
+    assert_int_equal(rc[0], K_EOWNERDEAD);
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(mtx.owner_died, 0);
+}
+
+/* ---- message queues ---- */
+
+static struct k_mq mq;
+static uint32_t mq_storage[4];
+
+static void *mq_producer(void *arg)
+{
+    uint32_t i;
+    (void)arg;
+    for (i = 0; i < 4; i++)
+        rc[0] |= k_mq_send(&mq, &i);
+    i = 4;
+    rc[1] = k_mq_send_ticks(&mq, &i, K_NO_WAIT);     /* full */
+    rc[2] = k_mq_send_ticks(&mq, &i, 10);            /* full: times out */
+    when[2] = k_ticks();
+    for (i = 10; i < 16; i++)                         /* blocks; consumer drains */
+        rc[3] |= k_mq_send(&mq, &i);
+    return NULL;
+}
+
+static uint32_t got[16];
+static int ngot;
+static void *mq_consumer(void *arg)
+{
+    uint32_t v;
+    (void)arg;
+    k_sleep_ticks(20);
+    while (k_mq_receive_ticks(&mq, &v, 5) == K_OK)
+        got[ngot++] = v;
+    rc[4] = k_mq_receive_ticks(&mq, &v, K_NO_WAIT);  /* empty */
+    return NULL;
+}
+
+static void test_mq_full_empty_blocking(void **state)
+{
+    const uint32_t want[] = {0, 1, 2, 3, 10, 11, 12, 13, 14, 15};
+    (void)state;
+    ngot = 0;
+    assert_int_equal(k_mq_init(&mq, mq_storage, sizeof(uint32_t), 4), K_OK);
+    spawn(0, "producer", mq_producer, NULL, 10);
+    spawn(1, "consumer", mq_consumer, NULL, 9);
+    k_start();
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(rc[1], K_EAGAIN);
+    assert_int_equal(rc[2], K_ETIMEDOUT);
+    assert_int_equal(when[2], 10);
+    assert_int_equal(rc[3], K_OK);
+    assert_int_equal(rc[4], K_EAGAIN);
+    assert_int_equal(ngot, 10);
+    assert_memory_equal(got, want, sizeof want);
+    assert_int_equal(k_mq_init(&mq, NULL, 4, 4), K_EINVAL);
+}
+
+static void *mq_receiver_first(void *arg)
+{
+    uint32_t v = 0;
+    (void)arg;
+    rc[0] = k_mq_receive(&mq, &v);
+    got[0] = v;
+    rc[1] = k_mq_count(&mq);
+    return NULL;
+}
+
+static void isr_sends(void *arg)
+{
+    uint32_t v = 0xC0FFEEu;
+    int i;
+    (void)arg;
+    rc[2] = k_mq_send_ticks(&mq, &v, K_NO_WAIT);
+    for (i = 0; i < 5; i++)
+        rc[3] = k_mq_send_ticks(&mq, &v, K_NO_WAIT); /* fills up: the last fails */
+    rc[4] = k_mq_send_ticks(&mq, &v, 5);             /* would wait in a handler */
+}
+
+static void *isr_sender(void *arg)
+{
+    (void)arg;
+    host_raise_irq(80);
+    return NULL;
+}
+
+static void test_mq_direct_handoff_and_isr(void **state)
+{
+    (void)state;
+    k_mq_init(&mq, mq_storage, sizeof(uint32_t), 4);
+    k_irq_register(80, 3, isr_sends, NULL);
+    spawn(0, "rx", mq_receiver_first, NULL, 10);
+    spawn(1, "isr", isr_sender, NULL, 5);
+    k_start();
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(got[0], 0xC0FFEEu);
+    assert_int_equal(rc[1], 4);       /* four more were queued by the handler */
+    assert_int_equal(rc[2], K_OK);
+    assert_int_equal(rc[3], K_EAGAIN);
+    assert_int_equal(rc[4], K_EISR);
+}
+
+/* ---- events ---- */
+
+static struct k_event ev;
+static uint32_t matched[4];
+static void *ev_all(void *arg)
+{
+    (void)arg;
+    rc[0] = k_event_wait(&ev, 0x3u, K_EVENT_ALL | K_EVENT_CLEAR, K_FOREVER, &matched[0]);
+    mark('A');
+    return NULL;
+}
+
+static void *ev_any(void *arg)
+{
+    (void)arg;
+    rc[1] = k_event_wait(&ev, 0x6u, K_EVENT_ANY, K_FOREVER, &matched[1]);
+    mark('Y');
+    rc[2] = k_event_wait(&ev, 0x80u, K_EVENT_ANY, 7, &matched[2]);
+    when[2] = k_ticks();
+    return NULL;
+}
+
+static void *ev_setter(void *arg)
+{
+    (void)arg;
+    mark('1');
+    k_event_set(&ev, 0x1u);
+    mark('2');
+    k_event_set(&ev, 0x2u);
+    mark('3');
+    return NULL;
+}
+
+static void test_events(void **state)
+{
+    (void)state;
+    k_event_init(&ev);
+    spawn(0, "all", ev_all, NULL, 10);
+    spawn(1, "any", ev_any, NULL, 10);
+    spawn(2, "set", ev_setter, NULL, 5);
+    k_start();
+    assert_string_equal(trace, "12AY3");
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(matched[0], 0x3u);
+    /* 'all' cleared 0x3 when it woke, but 'any' was matched in the same set */
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(matched[1], 0x2u);
+    assert_int_equal(rc[2], K_ETIMEDOUT);
+    assert_int_equal(ev.bits, 0u);
+    assert_int_equal(k_event_wait(&ev, 0, 0, 0, NULL), K_EINVAL);
+}
+
+/* ---- join and exit ---- */
+
+static void *returns_value(void *arg)
+{
+    k_sleep_ticks(3);
+    return arg;
+}
+
+static void *joiner(void *arg)
+{
+    void *v = NULL;
+    (void)arg;
+    rc[0] = k_thread_join(&th[0], &v, K_FOREVER);
+    got[0] = (uint32_t)(uintptr_t)v;
+    rc[1] = k_thread_join(&th[1], NULL, K_FOREVER); /* self */
+    rc[2] = k_thread_join(&th[0], &v, K_NO_WAIT);  /* already dead */
+    return NULL;
+}
+
+static void test_join(void **state)
+{
+    (void)state;
+    spawn(0, "child", returns_value, (void *)(uintptr_t)1234u, 5);
+    spawn(1, "parent", joiner, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(got[0], 1234u);
+    assert_int_equal(rc[1], K_EDEADLK);
+    assert_int_equal(rc[2], K_OK);
+    assert_int_equal(th[0].state, K_THREAD_DEAD);
+    /* a dead thread's slot may be reused */
+    assert_int_equal(spawn(0, "again", noop, NULL, 5), K_OK);
+}
+
+/* ---- stack guard ---- */
+
+static void *overflows(void *arg)
+{
+    (void)arg;
+    mark('o');
+    th[0].stack_base[1] = 0x12345678u; /* what a deep call chain would do */
+    k_sched_yield();
+    mark('X'); /* never: the thread is stopped at the switch */
+    return NULL;
+}
+
+static void *survivor(void *arg)
+{
+    (void)arg;
+    mark('s');
+    rc[0] = k_thread_join(&th[0], NULL, K_FOREVER);
+    return NULL;
+}
+
+static void test_stack_guard(void **state)
+{
+    (void)state;
+    spawn(0, "overflower", overflows, NULL, 5);
+    spawn(1, "survivor", survivor, NULL, 5);
+    k_start();
+    assert_string_equal(trace, "os");
+    assert_ptr_equal(k_stack_overflowed(), &th[0]);
+    assert_int_equal(k_stats.stack_overflows, 1);
+    assert_int_equal(rc[0], K_ESTACK);
+    assert_non_null(strstr(host_console, "stack overflow in thread 'overflower'"));
+}
+
+/* ---- the B-scheduler thread ---- */
+
+static struct bsched bs;
+static struct k_bsched kb;
+static uint32_t runs_of[4];
+static k_ticks_t first_run_tick[4];
+
+static void process(void *context, uint16_t index)
+{
+    (void)context;
+    if (runs_of[index]++ == 0u)
+        first_run_tick[index] = k_ticks();
+    /* process 3 is slow once: it takes 9 ticks in its second run */
+    if (index == 3u && runs_of[3] == 2u) {
+        int i;
+        for (i = 0; i < 9; i++)
+            host_tick();
+    }
+}
+
+static void test_bsched_thread_and_overrun(void **state)
+{
+    const uint8_t pv[] = {0, 1, 2, 3};
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    assert_int_equal(bsched_init(&bs, pv, 4), BSCHED_OK);
+    kb.stop_after = 64;
+    assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
+    assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 0, stacks[0], STACK_BYTES), K_EINVAL);
+    k_start();
+    assert_int_equal(kb.cycles_run, 64);
+    assert_int_equal(kb.thread.prio, K_PRIO_APP_MAX);
+    /* pv 0 runs every cycle, pv 1 every 2nd ... */
+    assert_int_equal(runs_of[0], 64);
+    assert_int_equal(runs_of[1], 32);
+    assert_int_equal(runs_of[2], 16);
+    assert_int_equal(runs_of[3], 8);
+    /* the 9-tick run overlapped the next two releases (period 4) */
+    assert_int_equal(kb.overrun_events, 1);
+    assert_int_equal(kb.overruns, 2);
+    assert_true(kb.max_cycle_ticks >= 9u);
+    assert_non_null(strstr(host_console, "bsched: overrun in minor cycle"));
+    assert_int_equal(first_run_tick[0], 1);
+}
+
+static void quick_process(void *context, uint16_t index)
+{
+    (void)context;
+    runs_of[index]++;
+}
+
+static void test_bsched_thread_no_overrun_when_fast(void **state)
+{
+    const uint8_t pv[] = {1, 1};
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
+    kb.stop_after = 100;
+    assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
+    k_start();
+    assert_int_equal(kb.cycles_run, 100);
+    assert_int_equal(kb.overruns, 0);
+    assert_int_equal(runs_of[0] + runs_of[1], 100); /* one of the two each cycle */
+    assert_int_equal(runs_of[0], 50);
+    assert_int_equal(k_ticks(), 100);
+    assert_null(strstr(host_console, "overrun"));
+}
+
+int main(void)
+{
+#define T(name) cmocka_unit_test_setup(name, setup)
+    const struct CMUnitTest tests[] = {
+        T(test_create_rejects_bad_arguments),
+        T(test_priority_order),
+        T(test_create_preempts),
+        T(test_timeslice_round_robin),
+        T(test_preemption_of_busy_thread),
+        T(test_yield_round_robin),
+        T(test_sleep_until_no_drift),
+        T(test_nanosleep_and_clock),
+        T(test_clock_nanosleep_absolute),
+        T(test_sem_timeout),
+        T(test_sem_handoff_order),
+        T(test_sem_timedwait_absolute),
+        T(test_irq_wakes_thread),
+        T(test_mutex_owner_checks),
+        T(test_priority_inheritance),
+        T(test_priority_inheritance_chain_and_timeout),
+        T(test_mutex_owner_dies),
+        T(test_mq_full_empty_blocking),
+        T(test_mq_direct_handoff_and_isr),
+        T(test_events),
+        T(test_join),
+        T(test_stack_guard),
+        T(test_bsched_thread_and_overrun),
+        T(test_bsched_thread_no_overrun_when_fast),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""Counts guest instructions of two kernel paths on the emulated RoboCube.
+
+Runs build/kernel/target/ktest-measure.elf under
+    qemu-system-m68k -M robocube -icount shift=8,sleep=off \
+        -singlestep -d exec,nochain -D <log>
+so QEMU logs one line per executed instruction (one instruction per
+translation block, no block chaining), then walks the PC sequence:
+
+  tick+switch: from the first instruction of the PIT vector (cpu32_vector_64)
+               taken while the low-priority spinner runs, to the label
+               ktest_after_sleep in the woken high-priority thread: PIT
+               handler, k_tick, timer expiry, k_isr_exit, the context switch
+               and the woken thread's return out of k_sleep_ticks.
+  sem hand-off: from ktest_before_post in the giver to ktest_after_wait in
+               the taker: k_sem_post, waking, switch, return out of k_sem_wait.
+
+Usage: kmeasure.py [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
+$BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
+"""
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[3]
+TRACE = re.compile(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/")
+
+
+def symbols(elf, cross="m68k-linux-gnu-"):
+    out = subprocess.run([cross + "nm", str(elf)], check=True, capture_output=True,
+                         text=True).stdout
+    table = {}
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3:
+            table[parts[2]] = int(parts[0], 16)
+    return table
+
+
+def trace_pcs(qemu, elf, seconds=60.0):
+    with tempfile.TemporaryDirectory() as tmp:
+        log = Path(tmp) / "exec.log"
+        proc = subprocess.Popen(
+            [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
+             "-monitor", "none", "-serial", "stdio", "-icount", "shift=8,sleep=off",
+             "-singlestep", "-d", "exec,nochain", "-D", str(log)],
+            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        out = b""
+        deadline = time.monotonic() + seconds
+        try:
+            while b"KTEST RESULT" not in out and time.monotonic() < deadline:
+                chunk = proc.stdout.read1(65536) if hasattr(proc.stdout, "read1") else b""
+                if not chunk:
+                    break
+                out += chunk
+            time.sleep(0.2)  # let the log flush
+        finally:
+            proc.kill()
+            proc.communicate()
+        pcs = []
+        with open(log, errors="replace") as f:
+            for line in f:
+                m = TRACE.match(line)
+                if m:
+                    pcs.append(int(m.group(1), 16))
+        return pcs, out.decode("latin-1")
+
+
+def spans(pcs, start, end, must_pass=None, stop_at=None, after_range=None):
+    """Instruction counts from each `start` PC to the next `end` PC."""
+    found = []
+    i = 0
+    n = len(pcs)
+    while i < n:
+        if pcs[i] == start and (after_range is None or
+                                (i > 0 and after_range[0] <= pcs[i - 1] < after_range[1])):
+            j = i + 1
+            passed = must_pass is None
+            while j < n and pcs[j] != end and (stop_at is None or pcs[j] != stop_at or j == i):
+                if must_pass is not None and pcs[j] == must_pass:
+                    passed = True
+                j += 1
+            if j < n and pcs[j] == end and passed:
+                found.append(j - i)
+            i = j
+        else:
+            i += 1
+    return found
+
+
+def measure(qemu, elf):
+    sym = symbols(elf)
+    pcs, console = trace_pcs(qemu, elf)
+    spin = sym["ktest_spin_loop"]
+    tick = spans(pcs, sym["cpu32_vector_64"], sym["ktest_after_sleep"],
+                 must_pass=sym["k_arch_switch"], stop_at=sym["cpu32_vector_64"],
+                 after_range=(spin - 64, spin + 64))
+    handoff = spans(pcs, sym["ktest_before_post"], sym["ktest_after_wait"],
+                    must_pass=sym["k_arch_switch"])
+    return {"tick_switch": tick, "sem_handoff": handoff, "traced": len(pcs),
+            "console": console}
+
+
+def summary(name, counts):
+    if not counts:
+        return f"{name}: not observed"
+    return (f"{name}: {statistics.median(counts):.0f} instructions (median of {len(counts)}, "
+            f"min {min(counts)}, max {max(counts)})")
+
+
+def main():
+    elf = Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "build/kernel/target/ktest-measure.elf"
+    qemu = sys.argv[2] if len(sys.argv) > 2 else os.environ.get("BSCHED_QEMU", "")
+    r = measure(qemu, elf)
+    print(f"traced {r['traced']} instructions")
+    print(summary("tick interrupt with a context switch", r["tick_switch"]))
+    print(summary("semaphore hand-off between two threads", r["sem_handoff"]))
+    return 0 if r["tick_switch"] and r["sem_handoff"] else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""Kernel footprint from a linker map: bytes of code and constants (.text*,
+.rodata*) that the link kept in flash, grouped by origin. Usage:
+    ksize.py build/kernel/target/ktest-measure.map
+Groups: kernel core (kernel/k_*.c), CPU32 port + board glue
+(kernel/arch/cpu32/k_*.c, switch.S), bsched.c, the firmware base it runs on
+(startup, fault reporter, polled console, PIT, kprintf), the test program."""
+import re
+import sys
+from collections import defaultdict
+
+FLASH_LO, FLASH_HI = 0xE00000, 0xF00000
+
+
+def group_of(path):
+    if "/build/kernel/target/obj/kernel/arch/" in path:
+        return "kernel CPU32 port + board glue"
+    if "/build/kernel/target/obj/kernel/" in path:
+        return "kernel core"
+    if path.endswith("bsched.c.o"):
+        return "bsched.c"
+    if "/build/firmware/obj/" in path:
+        return "firmware base (startup, faults, console, PIT, kprintf)"
+    return "test program"
+
+
+def main(map_path):
+    text = open(map_path).read()
+    body = text.split("Linker script and memory map", 1)[1]
+    sizes = defaultdict(int)
+    pending = None
+    for line in body.splitlines():
+        m = re.match(r"^ (\.(?:text|rodata)\S*)\s*$", line)
+        if m:
+            pending = m.group(1)
+            continue
+        m = re.match(r"^ (\.(?:text|rodata)\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+\.o)\s*$", line)
+        if m and (m.group(1) or pending):
+            addr, size, path = int(m.group(2), 16), int(m.group(3), 16), m.group(4)
+            if FLASH_LO <= addr < FLASH_HI and size:
+                sizes[group_of(path)] += size
+        pending = None
+    for g in sorted(sizes):
+        print(f"{sizes[g]:7d}  {g}")
+    kernel = sizes["kernel core"] + sizes["kernel CPU32 port + board glue"]
+    print(f"{kernel:7d}  kernel total")
+    print(f"{kernel + sizes['bsched.c']:7d}  kernel + bsched.c (goal < 16384)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))

@@ -1,0 +1,296 @@
+"""Boots the RoboCube firmware images on qemu-system-m68k -M robocube and
+checks what they print on the console (DUART channel B = first -serial).
+
+Environment (set by `make check-firmware-boot`):
+  BSCHED_QEMU   the qemu-system-m68k with the robocube machine
+  FW_DIR        build/firmware (robocube.elf, tests/fault-*.elf)
+  CROSS_PREFIX  m68k-linux-gnu- (objdump, nm, readelf)
+"""
+import json
+import os
+import re
+import select
+import socket
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+QEMU = os.environ.get("BSCHED_QEMU", "")
+FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
+CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
+FIRMWARE = FW_DIR / "robocube.elf"
+FAULT_IMAGES = {kind: FW_DIR / "tests" / f"fault-{kind}.elf"
+                for kind in ("unmapped", "flashwrite", "illegal", "zerodivide")}
+
+FLASH_BASE, FLASH_END = 0xE00000, 0xF00000
+
+# The paper's Table 1 process set and Table 2 (one major cycle).
+NAMES = ["p1.1", "p1.2", "p1.3", "p2.1", "p2.2", "p3.1", "p4.1", "p4.2", "p4.3"]
+PV = [1, 1, 1, 2, 2, 3, 4, 4, 4]
+TABLE2 = [
+    "p1.1 p1.3 p3.1", "p1.2 p2.1", "p1.1 p1.3 p4.3", "p1.2 p2.2",
+    "p1.1 p1.3 p4.1", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
+    "p1.1 p1.3 p3.1", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
+    "p1.1 p1.3 p4.2", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
+]
+MAJOR_CYCLES = 4          # TABLE1_MAJOR_CYCLES in kernel/apps/table1.c
+TICK_HZ = 128             # TABLE1_TICK_HZ
+BOOT_TIME_LIMIT = 20.0    # seconds of wall time for the whole Table 1 run
+FAULT_TIME_LIMIT = 10.0
+
+
+class Board:
+    """One qemu-system-m68k -M robocube run with the console on a pipe."""
+
+    def __init__(self, elf, qmp_path=None):
+        assert QEMU and os.access(QEMU, os.X_OK), f"BSCHED_QEMU not executable: {QEMU!r}"
+        assert Path(elf).is_file(), f"missing image {elf} (make firmware-tests)"
+        extra = ["-qmp", f"unix:{qmp_path},server=on,wait=off"] if qmp_path else []
+        self.start = time.monotonic()
+        self.proc = subprocess.Popen(
+            [QEMU, "-M", "robocube", "-kernel", str(elf), "-display", "none",
+             "-monitor", "none", "-serial", "stdio"] + extra,
+            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        self.output = b""
+        self.qmp = None
+        if qmp_path:
+            deadline = time.monotonic() + 10
+            while not os.path.exists(qmp_path):
+                assert time.monotonic() < deadline, "QMP socket did not appear"
+                time.sleep(0.05)
+            self.qmp = socket.socket(socket.AF_UNIX)
+            self.qmp.connect(str(qmp_path))
+            self.qmp_file = self.qmp.makefile("rw")
+            json.loads(self.qmp_file.readline())        # greeting
+            self.qmp_command("qmp_capabilities")
+
+    def qmp_command(self, name, **args):
+        self.qmp_file.write(json.dumps({"execute": name, "arguments": args}) + "\n")
+        self.qmp_file.flush()
+        while True:
+            reply = json.loads(self.qmp_file.readline())
+            if "return" in reply:
+                return reply["return"]
+            assert "error" not in reply, reply
+
+    def read_until(self, pattern, timeout):
+        """Reads the console until `pattern` (regex, bytes) matches; returns the match."""
+        regex = re.compile(pattern)
+        deadline = time.monotonic() + timeout
+        while True:
+            m = regex.search(self.output)
+            if m:
+                return m
+            left = deadline - time.monotonic()
+            if left <= 0 or self.proc.poll() is not None:
+                # drain what is left, then give up
+                ready, _, _ = select.select([self.proc.stdout], [], [], 0)
+                if ready:
+                    chunk = os.read(self.proc.stdout.fileno(), 65536)
+                    if chunk:
+                        self.output += chunk
+                        continue
+                raise AssertionError(
+                    f"no {pattern!r} within {timeout} s (qemu exit code {self.proc.poll()}); "
+                    f"console so far:\n{self.text()}\nstderr:\n{self.stderr()}")
+            ready, _, _ = select.select([self.proc.stdout], [], [], min(left, 0.2))
+            if ready:
+                chunk = os.read(self.proc.stdout.fileno(), 65536)
+                if chunk:
+                    self.output += chunk
+
+    def text(self):
+        return self.output.decode("latin-1").replace("\r\n", "\n")
+
+    def stderr(self):
+        if self.proc.poll() is None:
+            return "(running)"
+        return self.proc.stderr.read().decode("latin-1", "replace")
+
+    def close(self):
+        if self.qmp:
+            self.qmp.close()
+        if self.proc.poll() is None:
+            self.proc.kill()
+        self.proc.wait(timeout=10)
+
+
+@pytest.fixture
+def board_factory():
+    boards = []
+
+    def boot(elf, qmp_path=None):
+        b = Board(elf, qmp_path)
+        boards.append(b)
+        return b
+    yield boot
+    for b in boards:
+        b.close()
+
+
+def symbol(elf, name):
+    out = subprocess.run([CROSS + "nm", str(elf)], check=True, capture_output=True, text=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[2] == name:
+            return int(parts[0], 16)
+    raise AssertionError(f"symbol {name} not in {elf}")
+
+
+# ---------------------------------------------------------------- the default image
+
+def test_table1_prints_table2_and_periods(board_factory):
+    board = board_factory(FIRMWARE)
+    board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
+    elapsed = time.monotonic() - board.start
+    text = board.text()
+    print(f"Table 1 run finished {elapsed:.2f} s after qemu start")
+
+    assert "RoboCube firmware: B-scheduler, Table 1 process set" in text
+    assert f"tick {TICK_HZ} Hz" in text
+    cycles = re.findall(r"^cycle (\d+):((?: p\d\.\d)*)$", text, re.M)
+    assert len(cycles) == 16 * MAJOR_CYCLES, text
+    for i, (t, names) in enumerate(cycles):
+        assert int(t) == i % 16, f"line {i}: cycle {t}"
+        assert names.strip() == TABLE2[i % 16], f"minor cycle {i}: {names!r} != Table 2 row {i % 16}"
+
+    m = re.search(r"^ran (\d+) minor cycles in (\d+) ticks, (\d+) ticks missed$", text, re.M)
+    assert m, text
+    assert int(m.group(1)) == 16 * MAJOR_CYCLES
+    assert int(m.group(2)) == 16 * MAJOR_CYCLES, "one minor cycle per PIT tick"
+    assert int(m.group(3)) == 0
+
+    periods = dict(re.findall(r"^period (p\d\.\d): (.*)$", text, re.M))
+    assert sorted(periods) == sorted(NAMES)
+    for name, pv in zip(NAMES, PV):
+        runs = 16 * MAJOR_CYCLES // 2 ** pv
+        assert periods[name] == f"{2 ** pv} ticks ({runs} runs)", (name, periods[name])
+
+
+def test_led_blinks_after_table1(board_factory, tmp_path):
+    """After the run the firmware sleeps in STOP between PIT ticks and toggles
+    the port E LED every 64 ticks (0.5 s): sample the board's LED over QMP."""
+    board = board_factory(FIRMWARE, qmp_path=tmp_path / "qmp.sock")
+    board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
+    samples = []
+    end = time.monotonic() + 2.5
+    while time.monotonic() < end:
+        samples.append(bool(board.qmp_command("qom-get", path="/machine/sim", property="led")))
+        time.sleep(0.05)
+    changes = sum(1 for a, b in zip(samples, samples[1:]) if a != b)
+    assert 3 <= changes <= 7, f"LED changed {changes} times in 2.5 s: {samples}"
+    assert board.proc.poll() is None
+    assert "EXCEPTION" not in board.text()
+
+
+# ---------------------------------------------------------------- faults
+
+FAULTS = {
+    # kind: (vector, name, format, fault address or None, SSW direction or None)
+    "unmapped": (2, "bus error", "C", 0x400000, "read"),
+    "flashwrite": (2, "bus error", "C", 0xE00100, "write"),
+    "illegal": (4, "illegal instruction", "0", None, None),
+    "zerodivide": (5, "zero divide", "2", None, None),
+}
+
+REPORT = (rb"\*\*\* EXCEPTION vector=(\d+) \(([^)]*)\) format=\$([0-9A-F]) "
+          rb"pc=0x([0-9a-f]{8}) sr=0x([0-9a-f]{4}) fault_pc=0x([0-9a-f]{8})")
+
+
+@pytest.mark.parametrize("kind", sorted(FAULTS))
+def test_fault_is_reported_with_vector_and_pc(board_factory, kind):
+    vector, name, fmt, address, direction = FAULTS[kind]
+    elf = FAULT_IMAGES[kind]
+    insn = symbol(elf, "fault_instruction")
+    board = board_factory(elf)
+    board.read_until(rb"\*\*\* halted", FAULT_TIME_LIMIT)
+    text = board.text()
+    assert f"faulting instruction at 0x{insn:08x}" in text
+    assert "no exception was taken" not in text
+    # .data copied from flash into SRAM, .bss cleared by start.S
+    startup = re.search(r"startup: data_check=0x([0-9a-f]{8}) at 0x([0-9a-f]+), "
+                        r"bss_check=0x([0-9a-f]{8}) at 0x([0-9a-f]+)", text)
+    assert startup, text
+    assert int(startup.group(1), 16) == 0x5A17C0DE and int(startup.group(3), 16) == 0
+    assert int(startup.group(2), 16) < 0x100000 and int(startup.group(4), 16) < 0x100000
+    m = re.search(REPORT.decode(), text)
+    assert m, text
+    assert int(m.group(1)) == vector, text
+    assert m.group(2) == name
+    assert m.group(3) == fmt, f"CPU32 frame format for {name}"
+    sr = int(m.group(5), 16)
+    assert sr & 0x2000, "the fault happened in supervisor mode"
+    assert int(m.group(6), 16) == insn, f"fault_pc must be the faulting instruction 0x{insn:08x}"
+    pc = int(m.group(4), 16)
+    if kind == "illegal":
+        assert pc == insn            # format $0: PC of the illegal opcode
+    if kind == "zerodivide":
+        assert pc == insn + 2        # format $2: next instruction after DIVU.W Dn,Dn
+    if address is not None:
+        fa = re.search(r"bus error: fault address 0x([0-9a-f]{8})", text)
+        assert fa and int(fa.group(1), 16) == address, text
+        assert re.search(rf"SSW 0x[0-9a-f]{{4}}: {direction} ", text), text
+    # The CPU halted in the handler: QEMU itself must not have crashed.
+    time.sleep(0.3)
+    assert board.proc.poll() is None, f"qemu exited: {board.stderr()}"
+
+
+# ---------------------------------------------------------------- image layout
+
+def all_images():
+    return [FIRMWARE] + [FAULT_IMAGES[k] for k in sorted(FAULT_IMAGES)]
+
+
+# Instructions of the 68020 the CPU32 lacks (CPU32RM appendix: no bit field,
+# CAS/CAS2, CALLM/RTM, PACK/UNPK, coprocessor or FPU instructions).
+FORBIDDEN = re.compile(r"(bf(chg|clr|exts|extu|ffo|ins|set|tst)|cas2?|callm|rtm|pack|unpk|"
+                       r"f[a-z]+|cp[a-z]+)$")
+
+
+def instructions(elf):
+    """(address, mnemonic, operands) of every instruction in .text."""
+    dis = subprocess.run([CROSS + "objdump", "-d", "-j", ".text", str(elf)], check=True,
+                         capture_output=True, text=True).stdout
+    for line in dis.splitlines():
+        fields = line.split("\t")
+        if len(fields) >= 3 and fields[0].strip().endswith(":"):
+            parts = fields[2].split(None, 1)
+            yield fields[0].strip()[:-1], parts[0], parts[1] if len(parts) > 1 else ""
+
+
+def test_images_use_only_cpu32_instructions():
+    for elf in all_images():
+        assert elf.is_file(), f"missing {elf}"
+        insns = list(instructions(elf))
+        assert len(insns) > 100
+        bad = [i for i in insns if FORBIDDEN.match(i[1].split(".")[0])]
+        # Memory-indirect addressing (MIT syntax "@(...)@(...)") is 68020-only too.
+        bad += [i for i in insns if re.search(r"@\([^)]*\)@", i[2])]
+        assert not bad, f"{elf.name}: non-CPU32 instructions: {bad[:20]}"
+
+
+def test_load_addresses_and_reset_vectors(tmp_path):
+    for elf in all_images():
+        out = subprocess.run([CROSS + "readelf", "-lW", str(elf)], check=True,
+                             capture_output=True, text=True).stdout
+        loads = [line.split() for line in out.splitlines() if line.strip().startswith("LOAD")]
+        assert loads
+        for fields in loads:
+            paddr, filesz = int(fields[3], 16), int(fields[4], 16)
+            if filesz:
+                assert FLASH_BASE <= paddr and paddr + filesz <= FLASH_END, \
+                    f"{elf.name}: segment at 0x{paddr:x} is not in flash"
+        # Vector 1 (reset PC) is a flash offset: at reset the flash sits at 0.
+        flat = tmp_path / (elf.stem + ".bin")
+        subprocess.run([CROSS + "objcopy", "-O", "binary", "-j", ".text", str(elf), str(flat)],
+                       check=True)
+        raw = flat.read_bytes()
+        ssp, reset_pc = int.from_bytes(raw[0:4], "big"), int.from_bytes(raw[4:8], "big")
+        assert ssp == 0x100000
+        assert reset_pc == symbol(elf, "cpu32_reset") - FLASH_BASE
+        assert reset_pc < 0x10000, "reset code must lie in the first 64 KiB of flash"
+        # Vector 64 is the PIT interrupt, vector 2 the generic fault entry.
+        assert int.from_bytes(raw[64 * 4:65 * 4], "big") == symbol(elf, "cpu32_vector_64")
+        assert int.from_bytes(raw[2 * 4:3 * 4], "big") == symbol(elf, "cpu32_exception")
