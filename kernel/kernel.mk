@@ -10,8 +10,11 @@
 K_BUILD      := $(BUILD)/kernel
 K_CORE_SRCS  := kernel/k_struct.c kernel/k_sched.c kernel/k_sync.c kernel/k_mq.c \
                 kernel/k_irq.c kernel/k_fmt.c kernel/k_bsched.c
+# The formatter is the firmware's (kernel/lib/kprintf.c); on the target it
+# comes with the firmware base objects.
+K_HOST_LIB   := kernel/lib/kprintf.c
 K_HEADERS    := $(wildcard kernel/include/*.h) kernel/k_internal.h
-K_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
+K_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
                  -I$(ROOT)/kernel/tests/host/arch -I$(ROOT)/bsched
 K_HOST_PORT  := kernel/tests/host/arch/k_arch_host.c
 K_HOST_TESTS := $(K_BUILD)/tests/test_k_struct $(K_BUILD)/tests/test_k_threads
@@ -23,9 +26,10 @@ CHECKS += kernel-unit
 kernel-host-tests: $(K_HOST_TESTS)
 
 $(K_BUILD)/tests/test_k_%: kernel/tests/host/test_k_%.c $(K_CORE_SRCS) $(K_HOST_PORT) \
-                           bsched/bsched.c $(K_HEADERS) kernel/tests/host/arch/*.h
+                           $(K_HOST_LIB) bsched/bsched.c $(K_HEADERS) kernel/tests/host/arch/*.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(K_HOST_CFLAGS) -o $@ $< $(K_CORE_SRCS) $(K_HOST_PORT) bsched/bsched.c -lcmocka
+	$(HOST_CC) $(K_HOST_CFLAGS) -o $@ $< $(K_CORE_SRCS) $(K_HOST_PORT) $(K_HOST_LIB) \
+	    bsched/bsched.c -lcmocka
 
 check-kernel-unit: $(K_HOST_TESTS)
 	@$(SETUP) base
@@ -89,8 +93,10 @@ check-kernel-target:
 # every kernel object whole, then what one linked test image keeps.
 K_SIZE_OBJS := $(filter-out %/switch.S.o,$(K_TARGET_OBJS)) $(K_BUILD)/target/obj/kernel/arch/cpu32/switch.S.o
 kernel-size: $(K_TEST_ELFS)
-	@echo "== kernel objects (all services, nothing garbage-collected), m68k-linux-gnu-size:"
-	@$(CROSS_SIZE) $(K_SIZE_OBJS) $(FW_BUILD)/obj/bsched/bsched.c.o | awk \
+	@echo "== kernel objects (all services, nothing garbage-collected; kprintf.c is the"
+	@echo "   formatter k_printf uses), m68k-linux-gnu-size:"
+	@$(CROSS_SIZE) $(K_SIZE_OBJS) $(FW_BUILD)/obj/kernel/lib/kprintf.c.o \
+	    $(FW_BUILD)/obj/bsched/bsched.c.o | awk \
 	    'NR>1 { t += $$1; if ($$6 !~ /\/bsched\/bsched\.c\.o$$/) k += $$1 } { print } \
 	     END { printf "kernel text %d bytes, kernel + bsched.c %d bytes (goal < 16384)\n", k, t }'
 	@echo "== linked into ktest-overrun.elf (threads, sleep, bsched thread, console):"

@@ -82,7 +82,7 @@
   // What bsched_init establishes and bsched_step keeps: sizes and ranges that
   // make every access of bsched_step and bsched_due safe, waits below their
   // period, offsets below their period, and order[] a map into the processes
-  // that hits each process at most once.
+  // into the processes.
   predicate well_formed{L}(struct bsched *s) =
       1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
       1 <= s->perfect && s->perfect <= s->count &&
@@ -90,8 +90,7 @@
       (\forall integer i; 0 <= i < s->count ==>
            s->pv[i] <= s->maxpv && s->wait[i] < pow2(s->pv[i]) &&
            s->offset[i] < pow2(s->pv[i])) &&
-      (\forall integer id; 0 <= id < s->count ==> s->order[id] < s->count) &&
-      (\forall integer a, b; 0 <= a < b < s->count ==> s->order[a] != s->order[b]);
+      (\forall integer id; 0 <= id < s->count ==> s->order[id] < s->count);
 
   // The periodicity invariant of the hand proof, at the start of minor cycle
   // t = s->cycle: wait_i = (offset_i - t) mod 2^pv_i, i.e. process i is due

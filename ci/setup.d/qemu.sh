@@ -34,7 +34,7 @@ if [ -x "$qemu_bin" ] && [ "$(cat "$qemu_stamp" 2>/dev/null)" = "$qemu_want" ]; 
 fi
 
 apt_install dpkg-dev ninja-build meson pkg-config python3 libglib2.0-dev libpixman-1-dev \
-    zlib1g-dev flex bison patch
+    zlib1g-dev patch
 
 tree=$qemu_src/tree
 if [ ! -f "$tree/VERSION" ]; then

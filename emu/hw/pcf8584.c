@@ -221,11 +221,14 @@ static void pcf_write(void *opaque, hwaddr off, uint64_t val, unsigned size)
     }
 }
 
+/* 8-bit port on D15-D8: the CPU32's dynamic bus sizing turns a word access
+ * into two byte cycles (S0 side first), which the memory core reproduces by
+ * splitting at impl.max_access_size. */
 static const MemoryRegionOps pcf_ops = {
     .read = pcf_read,
     .write = pcf_write,
     .endianness = DEVICE_BIG_ENDIAN,
-    .valid = { .min_access_size = 1, .max_access_size = 1 },
+    .valid = { .min_access_size = 1, .max_access_size = 2 },
     .impl = { .min_access_size = 1, .max_access_size = 1 },
 };
 

@@ -90,6 +90,8 @@ puthex:                             /* %d0 as " XXXXXXXX" */
     dbra    %d2, 3b
     rts
 
+ok:      .asciz "RELOC OK\r\n"
+bad:     .asciz "FAIL\r\n"
 hello:   .asciz "HELLO\r\n"
 after:   .asciz "AFTER\r\n"
 berrmsg: .asciz "BERR"
@@ -151,8 +153,7 @@ def test_unmapped_instruction_fetch_is_a_bus_error(build_elf):
 def test_double_bus_fault_halts_cpu_not_qemu(build_elf):
     # Stack pointer into undecoded space, then a fault: stacking the bus
     # error frame faults again; the CPU32 halts.
-    with run(build_elf, "movea.l #0x00400000, %sp\n    tst.l 0x00200000",
-             extra_args=["-d", "guest_errors"]) as m:
+    with run(build_elf, "movea.l #0x00400000, %sp\n    tst.l 0x00200000") as m:
         m.console.read_until(b"HELLO\r\n", timeout=10)
         deadline_text = ""
         for _ in range(200):
@@ -187,3 +188,77 @@ def test_pit_interrupts_acknowledged_by_cpu(build_elf):
         entries = int(out.split(":")[1].split()[0], 16)
         assert ticks >= 2048
         assert entries in (ticks, ticks - 1), (entries, ticks)
+
+
+RELOCATION = r"""
+    .text
+    .long 0x00F20800                /* SSP: top of TPURAM */
+    .long start - 0xE00000          /* reset PC through the boot alias */
+    .long berr                      /* used after relocation (VBR = 0xE00000) */
+    .org 0x400
+start:
+    move.b  #0x00, 0xFFFA21         /* SYPCR: watchdog off */
+    move.w  #0xF200, 0xFFFB04       /* TPURAM at 0xF20000 */
+    move.b  #0x05, 0xFFE40A
+    lea     stub(%pc), %a0          /* copy the relocation stub into TPURAM */
+    lea     0xF20400, %a2
+    move.w  #(stub_end - stub) / 2 - 1, %d0
+1:  move.w  (%a0)+, (%a2)+
+    dbra    %d0, 1b
+    move.l  #relocated, %a1         /* link address 0xE0xxxx */
+    jmp     0xF20400
+stub:                               /* runs from TPURAM: the low alias vanishes */
+    move.w  #0xE007, 0xFFFA48       /* CSBARBT: flash to 0xE00000, 1 MiB */
+    jmp     (%a1)
+stub_end:
+relocated:
+    move.w  #0x0007, 0xFFFA4C       /* CSBAR0 */
+    move.w  #0x5C3E, 0xFFFA4E       /* CSOR0 */
+    move.w  #0x0007, 0xFFFA50       /* CSBAR1 */
+    move.w  #0x3C3E, 0xFFFA52       /* CSOR1: SRAM at 0 */
+    move.l  #0x12345678, 0x00001000
+    cmp.l   #0x12345678, 0x00001000
+    bne     fail
+    move.l  #0xCAFEF00D, 0x000FFFFC /* top of the 1 MiB SRAM */
+    cmp.l   #0xCAFEF00D, 0x000FFFFC
+    bne     fail
+    lea     0xE00000, %a0
+    movec   %a0, %vbr
+    lea     ok(%pc), %a0
+    bsr     puts
+    tst.l   0x00100000              /* just above SRAM: bus error */
+fail:
+    lea     bad(%pc), %a0
+    bsr     puts
+halt:
+    bra     halt
+"""
+
+
+def test_relocation_through_tpuram_then_sram_and_vbr(build_elf):
+    """The boot dance of BOARD.md with the CPU running: flash at 0 after reset,
+    a stub in TPURAM moves it to 0xE00000, SRAM appears at 0 with CS0/CS1,
+    VBR points into the relocated flash and a bus error finds its handler there."""
+    tail = PROGRAM[PROGRAM.index("/* Bus error: print"):]
+    with qtestlib.start(kernel=build_elf(RELOCATION + tail)) as m:
+        assert m.console.read_until(b"RELOC OK\r\n", timeout=10).endswith(b"RELOC OK\r\n")
+        fmt, fault_addr, pc, _ = berr_frame(m)
+        assert (fmt, fault_addr) == (0xC008, 0x00100000)
+        assert 0xE00000 <= pc < 0xF00000    # executing from the relocated flash
+        assert m.qom_get("/machine/sim", "flash-base") == 0xE00000
+        assert m.qom_get("/machine/sim", "sram-base") == 0
+        m.console.poll()
+        assert b"FAIL" not in m.console.received
+
+
+def test_bus_error_on_vector_fetch_is_a_double_fault(build_elf):
+    """VBR pointing at undecoded space: the bus error cannot fetch its own
+    vector, which the CPU32 treats as a double bus fault (halt)."""
+    with run(build_elf, "move.l #0x00400000, %a0\n    movec %a0, %vbr\n"
+                        "    tst.l 0x00200000") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        deadline = time.monotonic() + 10
+        while "double bus fault at 0x00400008" not in m.stderr():
+            assert time.monotonic() < deadline, m.stderr()
+            time.sleep(0.02)
+        assert m.qmp_cmd("query-status")["status"] == "running"

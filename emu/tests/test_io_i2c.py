@@ -206,3 +206,12 @@ def test_i2c_interrupt_seen_by_qtest_intercept(board):
     assert (True, 2) in b.m.irq_events                           # IPL 3
     b.readb(I2C_A)                                               # reading S0 sets PIN
     assert b.m.irq_events[-1] == (False, 2)
+
+
+def test_word_access_is_two_byte_cycles(board):
+    """Dynamic bus sizing: a word read of the 8-bit port reads S0 then S1."""
+    b = board
+    b.writeb(I2C_A + 1, PIN | ES1)
+    b.writew(I2C_A, 0x1CA0)              # S2 <- 0x1C, then S1 <- 0xA0 (still S2)
+    assert b.readb(I2C_A) == 0x1C
+    assert b.readw(I2C_A) == 0x1CA0      # S2, then S1 control read-back (ES0 = 0)

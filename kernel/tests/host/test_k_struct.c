@@ -26,6 +26,14 @@ static void test_highest_bit(void **state)
         assert_int_equal(k_highest_bit(((uint32_t)1u << b) | 1u), b);
     }
     assert_int_equal(k_highest_bit(0xFFFFFFFFu), 31);
+    /* every 16-bit pattern, in the low and in the high half */
+    for (b = 1; b < 0x10000u; b++) {
+        unsigned ref = 15;
+        while (((b >> ref) & 1u) == 0u)
+            ref--;
+        assert_int_equal(k_highest_bit(b), ref);
+        assert_int_equal(k_highest_bit((uint32_t)b << 16), ref + 16u);
+    }
 }
 
 static void test_prioq_order_and_fifo(void **state)

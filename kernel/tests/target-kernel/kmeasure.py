@@ -20,6 +20,7 @@ $BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
 """
 import os
 import re
+import select
 import statistics
 import subprocess
 import sys
@@ -42,26 +43,37 @@ def symbols(elf, cross="m68k-linux-gnu-"):
     return table
 
 
-def trace_pcs(qemu, elf, seconds=60.0):
-    with tempfile.TemporaryDirectory() as tmp:
-        log = Path(tmp) / "exec.log"
-        proc = subprocess.Popen(
-            [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
-             "-monitor", "none", "-serial", "stdio", "-icount", "shift=8,sleep=off",
-             "-singlestep", "-d", "exec,nochain", "-D", str(log)],
-            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-        out = b""
-        deadline = time.monotonic() + seconds
-        try:
-            while b"KTEST RESULT" not in out and time.monotonic() < deadline:
-                chunk = proc.stdout.read1(65536) if hasattr(proc.stdout, "read1") else b""
+def run_until_result(cmd, seconds):
+    """Runs QEMU (cmd) until the console shows a KTEST RESULT line or `seconds`
+    pass; returns (console bytes, stderr bytes)."""
+    proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE)
+    out = b""
+    deadline = time.monotonic() + seconds
+    try:
+        while not re.search(rb"KTEST RESULT [^\r\n]*\r?\n", out):
+            left = deadline - time.monotonic()
+            if left <= 0 or proc.poll() is not None:
+                break
+            ready, _, _ = select.select([proc.stdout], [], [], min(left, 0.2))
+            if ready:
+                chunk = os.read(proc.stdout.fileno(), 65536)
                 if not chunk:
                     break
                 out += chunk
-            time.sleep(0.2)  # let the log flush
-        finally:
-            proc.kill()
-            proc.communicate()
+    finally:
+        proc.kill()
+        _, err = proc.communicate()
+    return out, err
+
+
+def trace_pcs(qemu, elf, seconds=60.0):
+    with tempfile.TemporaryDirectory() as tmp:
+        log = Path(tmp) / "exec.log"
+        out, _ = run_until_result(
+            [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
+             "-monitor", "none", "-serial", "stdio", "-icount", "shift=8,sleep=off",
+             "-singlestep", "-d", "exec,nochain", "-D", str(log)], seconds)
         pcs = []
         with open(log, errors="replace") as f:
             for line in f:

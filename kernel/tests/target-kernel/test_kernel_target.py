@@ -14,12 +14,9 @@ Environment (set by `make check-kernel-target`):
 """
 import os
 import re
-import select
-import subprocess
-import time
 from pathlib import Path
 
-import pytest
+import kmeasure
 
 ROOT = Path(__file__).resolve().parents[3]
 QEMU = os.environ.get("BSCHED_QEMU", "")
@@ -36,24 +33,7 @@ def boot(mode, extra=(), limit=TIME_LIMIT):
     assert elf.is_file(), f"missing {elf} (make kernel-target)"
     cmd = [QEMU, "-M", "robocube", "-kernel", str(elf), "-display", "none",
            "-monitor", "none", "-serial", "stdio", *ICOUNT, *extra]
-    proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE)
-    out = b""
-    deadline = time.monotonic() + limit
-    try:
-        while not re.search(rb"KTEST RESULT [^\r\n]*\r?\n", out):
-            left = deadline - time.monotonic()
-            if left <= 0 or proc.poll() is not None:
-                break
-            ready, _, _ = select.select([proc.stdout], [], [], min(left, 0.2))
-            if ready:
-                chunk = os.read(proc.stdout.fileno(), 65536)
-                if not chunk:
-                    break
-                out += chunk
-    finally:
-        proc.kill()
-        _, err = proc.communicate()
+    out, err = kmeasure.run_until_result(cmd, limit)
     text = out.decode("latin-1").replace("\r\n", "\n")
     assert "KTEST RESULT" in text, (
         f"{mode}: no result line within {limit} s; console:\n{text}\nqemu stderr:\n"
@@ -172,7 +152,6 @@ def test_bad_use_gets_error_codes():
 def test_measure_instruction_counts():
     """Instruction counts of a tick with a switch and of a semaphore hand-off
     (kmeasure.py); written to build/kernel/measure.txt for the README."""
-    import kmeasure
     r = kmeasure.measure(QEMU, IMAGES / "ktest-measure.elf")
     assert "KTEST RESULT PASS" in r["console"], r["console"]
     tick, handoff = r["tick_switch"], r["sem_handoff"]

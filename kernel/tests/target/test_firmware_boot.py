@@ -143,10 +143,12 @@ def symbol(elf, name):
 
 def test_table1_prints_table2_and_periods(board_factory):
     board = board_factory(FIRMWARE)
+    board.read_until(rb"RoboCube firmware", BOOT_TIME_LIMIT)
+    banner = time.monotonic() - board.start
     board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
     elapsed = time.monotonic() - board.start
     text = board.text()
-    print(f"Table 1 run finished {elapsed:.2f} s after qemu start")
+    print(f"\nbanner {banner:.2f} s, Table 1 run finished {elapsed:.2f} s after qemu start")
 
     assert "RoboCube firmware: B-scheduler, Table 1 process set" in text
     assert f"tick {TICK_HZ} Hz" in text

@@ -22,6 +22,9 @@
 #ifndef PROOF_MAX_PV
 #error "PROOF_MAX_PV (the largest priority value to try) must be given with -D"
 #endif
+#ifndef PROOF_SORTED_INPUT
+#define PROOF_SORTED_INPUT 0
+#endif
 #if PROOF_MAX_PV < 0 || PROOF_MAX_PV > 8
 #error "PROOF_MAX_PV must be between 0 and 8"
 #endif
@@ -61,6 +64,12 @@ static void proof_nondet_set(struct proof_set *set)
     for (i = 0u; i < PROOF_N; i++) {
         set->pv[i] = nondet_uint8();
         __CPROVER_assume(set->pv[i] <= PROOF_P);
+#if PROOF_SORTED_INPUT
+        /* One input order per multiset: ascending, which the stable sort keeps. */
+        if (i > 0u) {
+            __CPROVER_assume(set->pv[i] >= set->pv[i - 1u]);
+        }
+#endif
         if (i < set->n) {
             set->area += PROOF_UNIT >> set->pv[i];
             if (set->pv[i] > set->maxpv) {
