@@ -71,6 +71,186 @@ static int plausible_state(const struct bsched *s)
            s->maxpv <= BSCHED_MAX_PV && s->perfect >= 1u;
 }
 
+/* Per priority class k, the working state of bsched_init. */
+struct bsched_classes {
+    uint32_t size[BSCHED_MAX_PV + 1];   /* c_k: processes in class k */
+    uint32_t next[BSCHED_MAX_PV + 1];   /* next free slot of class k in order[] */
+    uint32_t cursor[BSCHED_MAX_PV + 1]; /* s_k + members of class k placed so far */
+};
+
+/* Class sizes, first slots and Fig. 6 start values; returns maxpv. */
+/*@ requires 1 <= n <= BSCHED_MAX_PROCS;
+    requires \valid(c) && \valid_read(pv + (0 .. n - 1));
+    requires \separated(c, pv + (0 .. n - 1));
+    requires \forall integer i; 0 <= i < n ==> pv[i] <= BSCHED_MAX_PV;
+    assigns *c;
+    ensures sizes: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+        c->size[k] == class_count(pv, n, k) <= n;
+    ensures firsts: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+        c->next[k] == class_first(pv, n, k);
+    ensures starts: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+        c->cursor[k] == class_start(pv, n, k) < pow2(k);
+    ensures maxpv: \result == max_pv(pv, n) <= BSCHED_MAX_PV;
+    ensures maxpv_bounds: \forall integer i; 0 <= i < n ==> pv[i] <= \result;
+*/
+static uint32_t plan_classes(struct bsched_classes *c, const uint8_t *pv, uint32_t n)
+{
+    uint32_t maxpv = 0u;
+    uint32_t first = 0u;
+    uint32_t start = 0u;
+    uint32_t slots = 1u;
+    uint32_t i;
+    uint32_t k;
+
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_count(pv, n); */
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant \forall integer j; 0 <= j < k ==> c->size[j] == 0;
+        loop assigns k, c->size[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        c->size[k] = 0u;
+    }
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant size_is_count: \forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+            c->size[j] == class_count(pv, i, j);
+        loop invariant maxpv_is_max: maxpv == max_pv(pv, i) <= BSCHED_MAX_PV;
+        loop invariant maxpv_bounds: \forall integer j; 0 <= j < i ==> pv[j] <= maxpv;
+        loop assigns i, maxpv, c->size[0 .. BSCHED_MAX_PV];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        c->size[pv[i]]++;
+        if (pv[i] > maxpv) {
+            maxpv = pv[i];
+        }
+    }
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant first == class_first(pv, n, k) <= k * BSCHED_MAX_PROCS;
+        loop invariant \forall integer j; 0 <= j < k ==> c->next[j] == class_first(pv, n, j);
+        loop assigns k, first, c->next[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        c->next[k] = first;
+        first += c->size[k];
+    }
+    /* Fig. 6's start and n_slots, for every class at once: s_0 = 0, and
+     * s_(k+1) = 2 * ((s_k + c_k) mod 2^k). Class 0 has one slot, so it leaves
+     * start at 0, as Fig. 6 (whose loop begins at class 1) has it. */
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+        loop invariant k <= BSCHED_MAX_PV ==> start == class_start(pv, n, k) && slots == pow2(k);
+        loop invariant k <= BSCHED_MAX_PV ==> start < slots;
+        loop invariant \forall integer j; 0 <= j < k ==>
+            c->cursor[j] == class_start(pv, n, j) < pow2(j);
+        loop assigns k, start, slots, c->cursor[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - k;
+    */
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        c->cursor[k] = start;
+        start = (start + c->size[k]) % slots;
+        if (k < BSCHED_MAX_PV) {
+            start = start * 2u;
+            slots = slots * 2u;
+        }
+    }
+    return maxpv;
+}
+
+/* Stable counting sort (ties keep the caller's order) and, per process,
+ * Fig. 6: member j of class k waits reverse_k((s_k + j) mod 2^k). */
+/*@ requires 1 <= n <= BSCHED_MAX_PROCS;
+    requires \valid(s) && \valid(c) && \valid_read(pv + (0 .. n - 1));
+    requires \separated(s, c, pv + (0 .. n - 1));
+    requires \forall integer i; 0 <= i < n ==> pv[i] <= BSCHED_MAX_PV;
+    requires \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+        c->next[k] == class_first(pv, n, k) &&
+        c->cursor[k] == class_start(pv, n, k) < pow2(k);
+    assigns s->order[0 .. n - 1], s->offset[0 .. n - 1], c->next[0 .. BSCHED_MAX_PV],
+        c->cursor[0 .. BSCHED_MAX_PV];
+    ensures offsets: \forall integer i; 0 <= i < n ==>
+        s->offset[i] == init_wait(pv, n, i) && s->offset[i] < pow2(pv[i]);
+    ensures order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
+*/
+static void place_processes(struct bsched *s, struct bsched_classes *c,
+                            const uint8_t *pv, uint32_t n)
+{
+    uint32_t i;
+
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_count(pv, n); */
+    /*@ ghost lemma_first(pv, n); */
+    /* Every slot is overwritten below; clearing first keeps order[] within
+     * 0..n-1 by construction, whatever the struct held before. */
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant \forall integer id; 0 <= id < i ==> s->order[id] == 0;
+        loop assigns i, s->order[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        s->order[i] = 0u;
+    }
+    /*@ loop invariant 0 <= i <= n;
+        loop invariant next_is_slot: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+            c->next[k] == class_first{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
+        loop invariant cursor_is_rank: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+            c->cursor[k] == class_start{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
+        loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
+            s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
+        loop invariant order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
+        loop assigns i, c->next[0 .. BSCHED_MAX_PV], c->cursor[0 .. BSCHED_MAX_PV],
+            s->order[0 .. n - 1], s->offset[0 .. n - 1];
+        loop variant n - i;
+    */
+    for (i = 0u; i < n; i++) {
+        uint8_t pvi = pv[i];
+        uint32_t wait;
+        /*@ assert rank_below_size: class_count{Pre}(pv, i, pvi) < class_count{Pre}(pv, n, pvi); */
+        /*@ assert slot_in_class: c->next[pvi] < class_first{Pre}(pv, n, pvi + 1) <= n; */
+        s->order[c->next[pvi]] = (uint16_t)i;
+        c->next[pvi]++;
+        /*@ assert cursor_bound: c->cursor[pvi] < pow2(pvi) + BSCHED_MAX_PROCS; */
+        wait = reverse_bits(c->cursor[pvi] % period_of(pvi), pvi);
+        /*@ assert wait_closed: wait == init_wait{Pre}(pv, n, i); */
+        s->offset[i] = wait;
+        c->cursor[pvi]++;
+    }
+}
+
+/* perfect = ceil(sum_k c_k 2^-k), folded from the top class down:
+ * ceil(c_(k-1) + x/2) = c_(k-1) + ceil(ceil(x)/2), so 32 bits suffice. */
+/*@ requires 1 <= n <= BSCHED_MAX_PROCS;
+    requires \valid_read(c) && \valid_read(pv + (0 .. n - 1));
+    requires \forall integer i; 0 <= i < n ==> pv[i] <= BSCHED_MAX_PV;
+    requires \forall integer k; 0 <= k <= BSCHED_MAX_PV ==> c->size[k] == class_count(pv, n, k);
+    assigns \nothing;
+    ensures fold: \result == perfect_of(pv, n);
+    ensures bounds: 1 <= \result <= n;
+*/
+static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, uint32_t n)
+{
+    uint32_t carry = 0u;
+    uint32_t k;
+
+    (void)pv; /* pv and n name the set in the specification only */
+    (void)n;
+    /*@ ghost lemma_count(pv, n); */
+    /*@ ghost lemma_first(pv, n); */
+    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV;
+        loop invariant carry == carry_from(pv, n, k + 1);
+        loop invariant carry + class_first(pv, n, k + 1) <= n;
+        loop invariant carry == 0 ==> class_first(pv, n, k + 1) == n;
+        loop assigns k, carry;
+        loop variant k;
+    */
+    for (k = BSCHED_MAX_PV; k > 0u; k--) {
+        carry = (c->size[k] + carry + 1u) / 2u;
+    }
+    /*@ assert class_first(pv, n, 1) == c->size[0]; */
+    return c->size[0] + carry;
+}
+
 /*@ requires valid_state: s == \null || \valid(s);
     requires valid_input: pv != \null && 1 <= count <= BSCHED_MAX_PROCS ==>
         \valid_read(pv + (0 .. count - 1));
@@ -115,19 +295,11 @@ static int plausible_state(const struct bsched *s)
 */
 int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
 {
-    /* Per class k: its size c_k; the next free slot of the class in order[];
-     * the Fig. 6 cursor s_k + (members of the class placed so far). */
-    uint32_t class_size[BSCHED_MAX_PV + 1];
-    uint32_t class_next[BSCHED_MAX_PV + 1];
-    uint32_t class_cursor[BSCHED_MAX_PV + 1];
+    struct bsched_classes classes;
     uint32_t n;
-    uint32_t maxpv = 0u;
-    uint32_t first = 0u;
-    uint32_t carry = 0u;
-    uint32_t start = 0u;
-    uint32_t slots = 1u;
+    uint32_t maxpv;
+    uint32_t perfect;
     uint32_t i;
-    uint32_t k;
 
     if (s == NULL || pv == NULL) {
         return BSCHED_ERR_NULL;
@@ -150,111 +322,9 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             return BSCHED_ERR_PV_RANGE;
         }
     }
-    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
-    /*@ ghost lemma_count(pv, n); */
-    /*@ ghost lemma_first(pv, n); */
-
-    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
-        loop invariant \forall integer c; 0 <= c < k ==> class_size[c] == 0;
-        loop assigns k, class_size[0 .. BSCHED_MAX_PV];
-        loop variant BSCHED_MAX_PV + 1 - k;
-    */
-    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
-        class_size[k] = 0u;
-    }
-    /*@ loop invariant 0 <= i <= n;
-        loop invariant size_is_count: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
-            class_size[c] == class_count{Pre}(pv, i, c);
-        loop invariant maxpv_is_max: maxpv == max_pv{Pre}(pv, i) <= BSCHED_MAX_PV;
-        loop invariant maxpv_bounds: \forall integer j; 0 <= j < i ==> pv[j] <= maxpv;
-        loop assigns i, maxpv, class_size[0 .. BSCHED_MAX_PV];
-        loop variant n - i;
-    */
-    for (i = 0u; i < n; i++) {
-        class_size[pv[i]]++;
-        if (pv[i] > maxpv) {
-            maxpv = pv[i];
-        }
-    }
-    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
-        loop invariant first == class_first{Pre}(pv, n, k);
-        loop invariant \forall integer c; 0 <= c < k ==> class_next[c] == class_first{Pre}(pv, n, c);
-        loop assigns k, first, class_next[0 .. BSCHED_MAX_PV];
-        loop variant BSCHED_MAX_PV + 1 - k;
-    */
-    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
-        class_next[k] = first;
-        first += class_size[k];
-    }
-    /* Fig. 6's start and n_slots, for every class at once: s_0 = 0, and
-     * s_(k+1) = 2 * ((s_k + c_k) mod 2^k). Class 0 has one slot, so it leaves
-     * start at 0, as Fig. 6 (whose loop begins at class 1) has it. */
-    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
-        loop invariant k <= BSCHED_MAX_PV ==> start == class_start{Pre}(pv, n, k) && slots == pow2(k);
-        loop invariant k <= BSCHED_MAX_PV ==> start < slots;
-        loop invariant \forall integer c; 0 <= c < k ==>
-            class_cursor[c] == class_start{Pre}(pv, n, c) < pow2(c);
-        loop assigns k, start, slots, class_cursor[0 .. BSCHED_MAX_PV];
-        loop variant BSCHED_MAX_PV + 1 - k;
-    */
-    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
-        class_cursor[k] = start;
-        start = (start + class_size[k]) % slots;
-        if (k < BSCHED_MAX_PV) {
-            start = start * 2u;
-            slots = slots * 2u;
-        }
-    }
-
-    /* Every slot is overwritten below; clearing first keeps order[] within
-     * 0..n-1 by construction, whatever the struct held before. */
-    /*@ loop invariant 0 <= i <= n;
-        loop invariant \forall integer id; 0 <= id < i ==> s->order[id] == 0;
-        loop assigns i, s->order[0 .. n - 1];
-        loop variant n - i;
-    */
-    for (i = 0u; i < n; i++) {
-        s->order[i] = 0u;
-    }
-
-    /* Stable counting sort (ties keep the caller's order) and, per process,
-     * Fig. 6: member j of class k waits reverse_k((s_k + j) mod 2^k). */
-    /*@ loop invariant 0 <= i <= n;
-        loop invariant next_is_slot: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
-            class_next[c] == class_first{Pre}(pv, n, c) + class_count{Pre}(pv, i, c);
-        loop invariant cursor_is_rank: \forall integer c; 0 <= c <= BSCHED_MAX_PV ==>
-            class_cursor[c] == class_start{Pre}(pv, n, c) + class_count{Pre}(pv, i, c);
-        loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
-            s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
-        loop invariant order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
-        loop assigns i, class_next[0 .. BSCHED_MAX_PV], class_cursor[0 .. BSCHED_MAX_PV],
-            s->order[0 .. n - 1], s->offset[0 .. n - 1];
-        loop variant n - i;
-    */
-    for (i = 0u; i < n; i++) {
-        uint8_t pvi = pv[i];
-        /*@ assert rank_below_size: class_count{Pre}(pv, i, pvi) < class_count{Pre}(pv, n, pvi); */
-        /*@ assert slot_in_class: class_next[pvi] < class_first{Pre}(pv, n, pvi + 1) <= n; */
-        s->order[class_next[pvi]] = (uint16_t)i;
-        class_next[pvi]++;
-        s->offset[i] = reverse_bits(class_cursor[pvi] % period_of(pvi), pvi);
-        class_cursor[pvi]++;
-    }
-
-    /* perfect = ceil(sum_k c_k 2^-k), folded from the top class down:
-     * ceil(c_(k-1) + x/2) = c_(k-1) + ceil(ceil(x)/2), so 32 bits suffice. */
-    /*@ loop invariant 0 <= k <= BSCHED_MAX_PV;
-        loop invariant carry == carry_from{Pre}(pv, n, k + 1);
-        loop invariant carry + class_first{Pre}(pv, n, k + 1) <= n;
-        loop invariant carry == 0 ==> class_first{Pre}(pv, n, k + 1) == n;
-        loop assigns k, carry;
-        loop variant k;
-    */
-    for (k = BSCHED_MAX_PV; k > 0u; k--) {
-        carry = (class_size[k] + carry + 1u) / 2u;
-    }
-    s->perfect = (uint16_t)(class_size[0] + carry);
-
+    maxpv = plan_classes(&classes, pv, n);
+    place_processes(s, &classes, pv, n);
+    perfect = perfect_load(&classes, pv, n);
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> s->wait[j] == s->offset[j];
         loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
@@ -265,6 +335,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         s->pv[i] = pv[i];
         s->wait[i] = s->offset[i];
     }
+    s->perfect = (uint16_t)perfect;
     s->count = (uint16_t)n;
     s->maxpv = (uint8_t)maxpv;
     s->cycle = 0u;

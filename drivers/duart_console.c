@@ -5,15 +5,28 @@
 #include "kernel/lib/kprintf.h"
 
 /*
- * Baud clock: the counter/timer in timer mode divides the 3.6864 MHz
- * crystal; its output toggles every CTUR:CTLR clocks, so it runs at
- * 3686400 / (2 * 2) = 921600 Hz = 16 x 57600 baud, and CSRB = 0xDD picks it
- * for receive and transmit. ACR = 0xE0 also selects baud-rate set 2 for
- * the standard rates channel A (radio) uses.
+ * Baud clock, chosen at build time by CONSOLE_BAUD (duart_console.h):
+ * 57600 (default, the CubeOS console rate) is not in the MC68681 baud-rate
+ * tables, so the counter/timer in timer mode divides the 3.6864 MHz crystal
+ * by 2 x CTUR:CTLR = 4 to 921600 Hz = 16 x 57600, and CSRB = 0xDD takes it
+ * for receive and transmit. 38400 and 9600 come from baud-rate set 1
+ * (ACR bit 7 = 0) and leave the counter/timer stopped.
+ * ACR also holds channel A's baud-rate set; the radio driver must keep
+ * bits 7..4 as set here when it programs channel A.
  */
+#if CONSOLE_BAUD == 57600
 #define CONSOLE_ACR   0xE0u /* BRG set 2, counter/timer = timer from X1 */
 #define CONSOLE_CT    2u    /* counter/timer preload */
 #define CONSOLE_CSR   0xDDu /* RX and TX clock = counter/timer */
+#elif CONSOLE_BAUD == 38400
+#define CONSOLE_ACR   0x00u /* BRG set 1, counter/timer unused */
+#define CONSOLE_CSR   0xCCu /* set 1 code 0xC = 38400 */
+#elif CONSOLE_BAUD == 9600
+#define CONSOLE_ACR   0x00u
+#define CONSOLE_CSR   0xBBu /* set 1 code 0xB = 9600 */
+#else
+#error "CONSOLE_BAUD must be 57600, 38400 or 9600"
+#endif
 #define CONSOLE_MR1   0x13u /* no parity, 8 data bits, RxRDY interrupt, no RTS control */
 #define CONSOLE_MR2   0x07u /* normal mode, 1 stop bit */
 
@@ -27,9 +40,11 @@ void console_init(void)
     DUART_REG(DUART_MRB) = CONSOLE_MR1;
     DUART_REG(DUART_MRB) = CONSOLE_MR2;
     DUART_REG(DUART_ACR) = CONSOLE_ACR;
+#ifdef CONSOLE_CT
     DUART_REG(DUART_CTUR) = (uint8_t)(CONSOLE_CT >> 8);
     DUART_REG(DUART_CTLR) = (uint8_t)(CONSOLE_CT & 0xFFu);
     (void)DUART_REG(DUART_START_COUNTER);
+#endif
     DUART_REG(DUART_CSRB) = CONSOLE_CSR;
     DUART_REG(DUART_CRB) = DUART_CR_RX_ENABLE | DUART_CR_TX_ENABLE;
     kprintf_set_output(console_putc);

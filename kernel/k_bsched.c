@@ -1,6 +1,21 @@
 /* The B-scheduler thread (see k_bsched.h). */
 #include "k_bsched.h"
 
+/* The instance the tick watches (the first one started). */
+static struct k_bsched *k_bsched_watched;
+
+/* Tick hook: a cycle still running at its successor's release is announced
+ * at once; the in-thread accounting counts it when it ends. */
+static void k_bsched_watchdog(k_ticks_t now)
+{
+    struct k_bsched *b = k_bsched_watched;
+    if (b == NULL || !b->in_cycle || now != b->watch)
+        return;
+    b->stuck_reports++;
+    k_printf("bsched: minor cycle %lu still running at its successor's release (tick %lu)\n",
+             (unsigned long)b->cycles_run, (unsigned long)now);
+}
+
 /* Prints what happened since the last report; one line per wake-up, so
  * overruns that come faster than the console are summed, never lost. */
 static void *k_bsched_reporter(void *arg)
@@ -34,7 +49,10 @@ static void *k_bsched_main(void *arg)
         int32_t ran;
         (void)k_sleep_until(b->next_release);
         start = k_ticks();
+        b->watch = b->next_release + b->period;
+        b->in_cycle = 1;
         ran = bsched_run_cycle(b->sched, b->run, b->context);
+        b->in_cycle = 0;
         end = k_ticks();
         if (ran < 0) {
             k_printf("bsched: cycle failed with error %ld, thread stops\n", (long)ran);
@@ -56,6 +74,10 @@ static void *k_bsched_main(void *arg)
         }
         if (b->stop || (b->stop_after != 0u && b->cycles_run >= b->stop_after))
             break;
+    }
+    if (k_bsched_watched == b) {
+        k_tick_hook = NULL;
+        k_bsched_watched = NULL;
     }
     b->finished = 1;
     (void)k_sem_post(&b->report_sem);
@@ -83,6 +105,8 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     b->last_overrun_late = 0;
     b->reported_events = 0;
     b->finished = 0;
+    b->in_cycle = 0;
+    b->stuck_reports = 0;
     r = k_sem_init(&b->report_sem, 0, 0xFFFFFFFFu);
     if (r == K_OK)
         r = k_thread_create(&b->reporter, "bsched-report", k_bsched_reporter, b,
@@ -90,5 +114,9 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     if (r == K_OK)
         r = k_thread_create(&b->thread, "bsched", k_bsched_main, b, stack, stack_bytes,
                             K_PRIO_APP_MAX);
+    if (r == K_OK && k_tick_hook == NULL) {
+        k_bsched_watched = b;
+        k_tick_hook = k_bsched_watchdog;
+    }
     return r;
 }

@@ -11,6 +11,7 @@
 
 struct k_kernel k_kernel;
 struct k_stats k_stats;
+void (*volatile k_tick_hook)(k_ticks_t now);
 
 K_STACK_DEFINE(k_idle_stack, K_IDLE_STACK_BYTES);
 
@@ -434,6 +435,11 @@ void k_tick(void)
     }
     k_resched(); /* deferred to k_isr_exit when called from the handler */
     k_arch_irq_restore(s);
+    {
+        void (*hook)(k_ticks_t) = k_tick_hook;
+        if (hook != NULL)
+            hook(now);
+    }
 }
 
 /* ---- time ---- */
@@ -579,6 +585,7 @@ void k_init(void)
 {
     k_memset(&k_kernel, 0, sizeof k_kernel);
     k_memset(&k_stats, 0, sizeof k_stats);
+    k_tick_hook = NULL;
     k_prioq_init(&k_kernel.ready);
     k_tlist_init(&k_kernel.timers);
     k_thread_setup(&k_kernel.idle, "idle", k_idle_main, NULL, k_idle_stack,

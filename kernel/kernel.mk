@@ -76,7 +76,8 @@ $(K_BUILD)/target/ktest-%.o: kernel/tests/target-kernel/ktest.c
 $(K_BUILD)/target/ktest-%.elf: $(K_BUILD)/target/ktest-%.o $(K_TARGET_OBJS) $(FW_BASE_OBJS) $(FW_LDSCRIPT)
 	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) $(K_TARGET_OBJS) $<
 
-.PRECIOUS: $(K_BUILD)/target/ktest-%.o
+.PRECIOUS: $(K_BUILD)/target/ktest-%.o $(K_BUILD)/target/obj/%.o
+.SECONDARY: $(K_TARGET_OBJS)
 
 # Dependency files are only read, never remade (no built-in rule may try).
 K_DEP_FILES := $(shell find $(K_BUILD)/target -name '*.d' 2>/dev/null)

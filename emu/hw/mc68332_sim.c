@@ -152,8 +152,11 @@ static unsigned cs_pin_field(MC68332SimState *s, int cs)
 static bool cs_enabled(MC68332SimState *s, int cs)
 {
     /* A chip select asserts when its pin is assigned to the chip-select
-     * function (CSPAR field 1x) and its BYTE field in CSOR is not "off". */
-    return (cs_pin_field(s, cs) & 2) && ((s->cs_or[cs] >> 13) & 3) != 0;
+     * function (CSPAR field 1x; CSBOOT is always a chip select, its field
+     * only chooses the port size) and its BYTE field in CSOR is not "off". */
+    bool pin_is_cs = cs == CS_BOOT || (cs_pin_field(s, cs) & 2);
+
+    return pin_is_cs && ((s->cs_or[cs] >> 13) & 3) != 0;
 }
 
 static void sim_place(MemoryRegion *mr, bool on, hwaddr addr, hwaddr offset,

@@ -73,8 +73,10 @@ struct MC68681DuartState {
     /* Counter/timer: runs from the X1 crystal (or X1/16), see ct_* below. */
     QEMUTimer *ct_timer;
     bool ct_running;        /* counter mode: between start and stop */
-    int64_t ct_start_ns;    /* when the current count started */
-    uint32_t ct_start_value;
+    bool ct_ready_latched;  /* ISR[3] known to be set */
+    int64_t ct_origin_ns;   /* events are counted from here ... */
+    uint32_t ct_origin_value;   /* ... where the count was this */
+    int64_t ct_cleared_ns;  /* events up to here are consumed (ISR[3] cleared) */
 };
 
 static MC68681DuartState *the_duart;
@@ -106,9 +108,15 @@ static uint8_t channel_sr(DuartChannel *c)
     return sr;
 }
 
+static bool ct_ready(MC68681DuartState *s);
+
 static uint8_t duart_isr(MC68681DuartState *s)
 {
     uint8_t isr = s->isr_latched;
+
+    if (ct_ready(s)) {
+        isr |= ISR_CTR;
+    }
     int i;
 
     for (i = 0; i < 2; i++) {
@@ -264,7 +272,14 @@ static void channel_command(MC68681DuartState *s, DuartChannel *c, uint8_t cr)
     }
 }
 
-/* ---- counter/timer ------------------------------------------------------- */
+/* ---- counter/timer -------------------------------------------------------
+ *
+ * Evaluated lazily from the virtual clock: counter-ready events happen at
+ * fixed cycle counts after an origin (ct_origin_ns, where the count was
+ * ct_origin_value), so ISR[3] and CUR:CLR are computed when read.  A QEMU
+ * timer is armed only when the event must raise an interrupt (IMR bit 3 set
+ * and ISR[3] not yet set): the console's 57600 baud setting runs the
+ * timer at 1.085 us per period, far too often for a callback per event. */
 
 /* Clock of the counter/timer in Hz, or 0 for sources not modelled
  * (IP2 pin, TxCA/TxCB). */
@@ -282,65 +297,146 @@ static bool ct_timer_mode(MC68681DuartState *s)
     return s->acr & 0x40;
 }
 
-/* Clock cycles between two counter-ready events. */
-static uint64_t ct_event_cycles(MC68681DuartState *s)
+static bool ct_active(MC68681DuartState *s)
 {
+    return ct_clock_hz(s) && (ct_timer_mode(s) || s->ct_running);
+}
+
+static uint64_t ct_preload_cycles(MC68681DuartState *s)
+{
+    return s->ct_preload ? s->ct_preload : 0x10000;
+}
+
+/* Cycle count (after the origin) of counter-ready event k >= 1. */
+static uint64_t ct_event_cycle(MC68681DuartState *s, uint64_t k)
+{
+    uint64_t first;
+
     if (ct_timer_mode(s)) {
         /* Square wave of period 2 x preload; ISR[3] once per period. */
-        return 2 * (uint64_t)(s->ct_preload ? s->ct_preload : 0x10000);
+        return k * 2 * ct_preload_cycles(s);
     }
-    /* Counter: from the start value down through 0 (then wraps from 0xFFFF). */
-    return s->ct_start_value ? s->ct_start_value : 0x10000;
+    /* Counter: terminal count after the origin value, then every 0x10000. */
+    first = s->ct_origin_value ? s->ct_origin_value : 0x10000;
+    return first + (k - 1) * 0x10000;
+}
+
+static int64_t ct_cycle_ns(MC68681DuartState *s, uint64_t cycles)
+{
+    return s->ct_origin_ns +
+           (int64_t)muldiv64(cycles, NANOSECONDS_PER_SECOND, ct_clock_hz(s));
+}
+
+static uint64_t ct_cycles_at(MC68681DuartState *s, int64_t ns)
+{
+    return ns <= s->ct_origin_ns ? 0 :
+           muldiv64(ns - s->ct_origin_ns, ct_clock_hz(s), NANOSECONDS_PER_SECOND);
+}
+
+/* Time of the first event after the last clear of ISR[3]. */
+static int64_t ct_next_event_ns(MC68681DuartState *s)
+{
+    uint64_t c = ct_cycles_at(s, s->ct_cleared_ns);
+    uint64_t k;
+
+    if (ct_timer_mode(s)) {
+        k = c / (2 * ct_preload_cycles(s));
+    } else {
+        uint64_t first = s->ct_origin_value ? s->ct_origin_value : 0x10000;
+        k = c < first ? 0 : (c - first) / 0x10000;
+    }
+    k = MAX(k, 1);
+    while (ct_cycle_ns(s, ct_event_cycle(s, k)) <= s->ct_cleared_ns) {
+        k++;
+    }
+    return ct_cycle_ns(s, ct_event_cycle(s, k));
+}
+
+static bool ct_ready(MC68681DuartState *s)
+{
+    return s->ct_ready_latched ||
+           (ct_active(s) &&
+            ct_next_event_ns(s) <= qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL));
 }
 
 static void ct_schedule(MC68681DuartState *s)
 {
-    uint32_t hz = ct_clock_hz(s);
-
-    if (!hz || (!ct_timer_mode(s) && !s->ct_running)) {
+    if (ct_active(s) && !s->ct_ready_latched && (s->imr & ISR_CTR)) {
+        timer_mod(s->ct_timer, ct_next_event_ns(s));
+    } else {
         timer_del(s->ct_timer);
-        return;
     }
-    timer_mod(s->ct_timer, s->ct_start_ns +
-              (int64_t)muldiv64(ct_event_cycles(s), NANOSECONDS_PER_SECOND, hz));
-}
-
-static void ct_start(MC68681DuartState *s)
-{
-    s->ct_start_ns = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
-    s->ct_start_value = s->ct_preload;
-    ct_schedule(s);
 }
 
 static void ct_expire(void *opaque)
 {
     MC68681DuartState *s = opaque;
-    uint32_t hz = ct_clock_hz(s);
 
-    s->isr_latched |= ISR_CTR;
-    /* Next period starts exactly where this one ended. */
-    s->ct_start_ns += (int64_t)muldiv64(ct_event_cycles(s), NANOSECONDS_PER_SECOND, hz);
-    s->ct_start_value = ct_timer_mode(s) ? s->ct_preload : 0x10000;
-    ct_schedule(s);
+    s->ct_ready_latched = true;
     duart_update_irq(s);
 }
 
 /* Current counter value (CUR:CLR readback). */
 static uint16_t ct_value(MC68681DuartState *s)
 {
-    uint32_t hz = ct_clock_hz(s);
-    uint64_t elapsed, period;
+    uint64_t elapsed;
 
-    if (!hz || (!ct_timer_mode(s) && !s->ct_running)) {
-        return s->ct_start_value;
+    if (!ct_active(s)) {
+        return s->ct_origin_value;
     }
-    elapsed = muldiv64(qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) - s->ct_start_ns,
-                       hz, NANOSECONDS_PER_SECOND);
+    elapsed = ct_cycles_at(s, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL));
     if (ct_timer_mode(s)) {
-        period = s->ct_preload ? s->ct_preload : 0x10000;
-        return period - (elapsed % period);
+        return ct_preload_cycles(s) - (elapsed % ct_preload_cycles(s));
     }
-    return (uint16_t)(s->ct_start_value - elapsed);
+    return (uint16_t)(s->ct_origin_value - elapsed);
+}
+
+/* Moves the origin to now with the given count, keeping ISR[3]. */
+static void ct_rebase(MC68681DuartState *s, uint32_t value)
+{
+    int64_t now = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+
+    s->ct_ready_latched = ct_ready(s);
+    s->ct_origin_ns = now;
+    s->ct_origin_value = value;
+    s->ct_cleared_ns = now;
+}
+
+static void ct_start_command(MC68681DuartState *s)
+{
+    ct_rebase(s, s->ct_preload);
+    s->ct_running = true;
+    ct_schedule(s);
+}
+
+static void ct_stop_command(MC68681DuartState *s)
+{
+    if (!ct_timer_mode(s) && s->ct_running) {
+        ct_rebase(s, ct_value(s));
+        s->ct_running = false;
+    }
+    s->ct_ready_latched = false;
+    s->ct_cleared_ns = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+    ct_schedule(s);
+}
+
+static void ct_write_acr(MC68681DuartState *s, uint8_t acr)
+{
+    uint8_t old_mode = (s->acr >> 4) & 7;
+
+    if (old_mode != ((acr >> 4) & 7)) {
+        /* Keep ISR[3] and the count through a change of mode or clock. */
+        uint32_t value = ct_value(s);
+
+        ct_rebase(s, value);
+        s->acr = acr;
+        if (ct_timer_mode(s)) {
+            s->ct_origin_value = s->ct_preload;     /* the timer reloads */
+        }
+    } else {
+        s->acr = acr;
+    }
+    ct_schedule(s);
 }
 
 /* ---- input port ------------------------------------------------------------ */
@@ -397,18 +493,11 @@ static uint64_t duart_read(void *opaque, hwaddr addr, unsigned size)
         v = s->ip | 0xC0;
         break;
     case 0xE:                           /* start counter command */
-        ct_start(s);
-        s->ct_running = true;
-        ct_schedule(s);
+        ct_start_command(s);
         v = 0xFF;
         break;
     case 0xF:                           /* stop counter command */
-        s->isr_latched &= ~ISR_CTR;
-        if (!ct_timer_mode(s) && s->ct_running) {
-            s->ct_start_value = ct_value(s);
-            s->ct_running = false;
-            ct_schedule(s);
-        }
+        ct_stop_command(s);
         v = 0xFF;
         break;
     default:                            /* 0x2, 0xA: reserved/test */
@@ -443,24 +532,26 @@ static void duart_write(void *opaque, hwaddr addr, uint64_t value, unsigned size
     case 0x3: case 0xB:
         channel_transmit(s, c, v);
         break;
-    case 0x4: {
-        bool was_timer = ct_timer_mode(s);
-        s->acr = v;
-        if (ct_timer_mode(s) && !was_timer) {
-            ct_start(s);
-        } else {
-            ct_schedule(s);
-        }
+    case 0x4:
+        ct_write_acr(s, v);
         break;
-    }
     case 0x5:
         s->imr = v;
+        ct_schedule(s);
         break;
     case 0x6:
         s->ct_preload = (s->ct_preload & 0x00FF) | (v << 8);
+        if (ct_timer_mode(s)) {
+            ct_rebase(s, s->ct_preload);    /* the timer runs on the new value */
+            ct_schedule(s);
+        }
         break;
     case 0x7:
         s->ct_preload = (s->ct_preload & 0xFF00) | v;
+        if (ct_timer_mode(s)) {
+            ct_rebase(s, s->ct_preload);
+            ct_schedule(s);
+        }
         break;
     case 0xC:
         s->ivr = v;
@@ -511,7 +602,9 @@ static void duart_reset(DeviceState *dev)
     s->ipcr_delta = 0;
     s->ct_preload = 0;
     s->ct_running = false;
-    s->ct_start_value = 0;
+    s->ct_ready_latched = false;
+    s->ct_origin_ns = s->ct_cleared_ns = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+    s->ct_origin_value = 0;
     timer_del(s->ct_timer);
     duart_update_irq(s);
 }

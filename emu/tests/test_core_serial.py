@@ -280,3 +280,39 @@ def test_duart_counter_mode(machine):
     m.clock_step(20_000_000)
     assert (m.readb(CUR) << 8) | m.readb(CLR) == held
     assert not m.readb(ISR) & 0x08
+
+
+def test_duart_console_baud_timer_is_lazy(machine):
+    """CubeOS's 57600 baud setting (ACR=0xE0: timer from X1, preload 2) gives a
+    counter-ready event every 1.085 us.  With IMR bit 3 clear the model must
+    still report ISR[3] when read, without a callback per event (one virtual
+    second of it has to be cheap), and arm a timer once IMR enables it."""
+    m = machine
+    m.writeb(CTUR, 0x00)
+    m.writeb(CTLR, 0x02)
+    m.writeb(ACR, 0xE0)
+    m.readb(STOP_CT)                         # clear ISR[3]
+    assert not m.readb(ISR) & 0x08
+    start = time.monotonic()
+    m.clock_step(1_000_000_000)
+    assert time.monotonic() - start < 0.5
+    assert m.readb(ISR) & 0x08
+    assert intc(m) == (0, 0)
+    m.readb(STOP_CT)
+    m.writeb(IMR, 0x08)
+    m.clock_step(2_000)                      # next event within 1.085 us
+    assert intc(m) == (5, 0x0F)
+
+
+def test_duart_timer_preload_change_restarts_period(machine):
+    m = machine
+    m.writeb(CTUR, 0x12)                     # 2.5 ms period
+    m.writeb(CTLR, 0x00)
+    m.writeb(ACR, 0x60)
+    m.clock_step(1_000_000)
+    m.writeb(CTUR, 0x24)                     # 0x2400: 5 ms period from now
+    m.writeb(CTLR, 0x00)
+    m.clock_step(4_900_000)
+    assert not m.readb(ISR) & 0x08
+    m.clock_step(200_000)
+    assert m.readb(ISR) & 0x08

@@ -5,13 +5,18 @@
  * Prints one line per minor cycle, "cycle T: p1.1 p1.3 p3.1", T being the
  * minor cycle within the major cycle (Table 2's numbering), for
  * TABLE1_MAJOR_CYCLES major cycles; then, per process, the period measured
- * from the PIT tick count at each of its actual runs. Then it idles and
- * blinks the LED at 1 Hz.
+ * from the PIT tick count at each of its actual runs: a process body records
+ * the tick number of the PIT interrupt that started the minor cycle it runs
+ * in (the main loop reads it once per cycle, so every process of one cycle
+ * sees the same tick even if the next interrupt arrives while the cycle is
+ * still printing). If the loop falls behind and a tick passes without a
+ * minor cycle, that shows up both as "ticks missed" and in the periods.
+ * Then the firmware idles and blinks the LED at 1 Hz.
  *
  * Tick rate: TABLE1_TICK_HZ = 128 Hz (PITM = 64, 7.8125 ms). The original
  * CubeOS tick was 1024 Hz, but a minor cycle here also prints its line on
- * the 57600-baud console (at most 26 characters = 4.5 ms), which must fit
- * in one tick or the measured periods would stretch.
+ * the polled console (at most 26 characters: 6.8 ms at 38400 baud, 4.5 ms
+ * at 57600), which must fit in one tick or minor cycles would fall behind.
  */
 #include <stdint.h>
 
@@ -45,15 +50,22 @@ struct run_record {
     uint32_t max_period;
 };
 
+/* Shared by the process bodies: the tick that started the current minor cycle. */
+struct table1_run {
+    uint32_t cycle_tick;
+    struct run_record records[TABLE1_PROCS];
+};
+
 static struct bsched sched;
-static struct run_record records[TABLE1_PROCS];
+static struct table1_run run;
 
 /* The process body: every Table 1 process records the tick it runs in and
  * names itself on the cycle's line. */
 static void run_process(void *context, uint16_t index)
 {
-    struct run_record *r = &((struct run_record *)context)[index];
-    uint32_t now = pit_ticks();
+    struct table1_run *ctx = context;
+    struct run_record *r = &ctx->records[index];
+    uint32_t now = ctx->cycle_tick;
 
     if (r->runs > 0u) {
         uint32_t period = now - r->last_tick;
@@ -75,7 +87,7 @@ static void print_periods(void)
 
     kprintf("measured periods (PIT ticks between consecutive runs):\n");
     for (i = 0; i < TABLE1_PROCS; i++) {
-        const struct run_record *r = &records[i];
+        const struct run_record *r = &run.records[i];
         if (r->runs < 2u) {
             kprintf("period %s: not measured (%lu run)\n", table1_names[i],
                     (unsigned long)r->runs);
@@ -98,9 +110,9 @@ int main(void)
     console_init();
     led_init();
     kprintf("\nRoboCube firmware: B-scheduler, Table 1 process set\n");
-    kprintf("cpu MC68332 %lu Hz, tick %lu Hz, bsched capacity %u\n",
+    kprintf("cpu MC68332 %lu Hz, tick %lu Hz, console %lu baud, bsched capacity %u\n",
             (unsigned long)CPU_CLOCK_HZ, (unsigned long)TABLE1_TICK_HZ,
-            (unsigned)BSCHED_MAX_PROCS);
+            (unsigned long)CONSOLE_BAUD, (unsigned)BSCHED_MAX_PROCS);
 
     rc = bsched_init(&sched, table1_pv, TABLE1_PROCS);
     if (rc != BSCHED_OK) {
@@ -128,7 +140,8 @@ int main(void)
             led_toggle(); /* the LED changes state every major cycle */
         }
         kprintf("cycle %lu:", (unsigned long)sched.cycle);
-        rc = bsched_run_cycle(&sched, run_process, records);
+        run.cycle_tick = tick;
+        rc = bsched_run_cycle(&sched, run_process, &run);
         kprintf("\n");
         if (rc < 0) {
             kprintf("bsched_run_cycle failed: %ld\n", (long)rc);

@@ -10,6 +10,10 @@
  * reporter thread just below the B-scheduler thread's priority, so that the
  * report (about a millisecond of output formatting) never delays a cycle;
  * its line names the overrun cycle, how late it ended and the totals.
+ * A cycle that is still running when its successor is due is also announced
+ * at that tick, from the tick interrupt (k_tick_hook), so that a cycle that
+ * never ends is not silent either: "bsched: minor cycle C still running at
+ * its successor's release (tick T)".
  */
 #ifndef K_BSCHED_H
 #define K_BSCHED_H
@@ -35,6 +39,9 @@ struct k_bsched {
     uint32_t last_overrun_late;   /* ticks its end was past the release */
     uint32_t reported_events;     /* overrun events printed so far */
     int finished;
+    volatile int in_cycle;        /* a minor cycle is running */
+    volatile k_ticks_t watch;     /* tick at which a running cycle overruns */
+    volatile uint32_t stuck_reports; /* "still running" announcements */
     struct k_sem report_sem;
     struct k_thread reporter;
     uint32_t reporter_stack[K_STACK_WORDS(768u)] __attribute__((aligned(4)));

@@ -214,6 +214,10 @@ void k_isr_enter(void);
 void k_isr_exit(void);
 /* The tick: called by the tick interrupt handler (the PIT on the 68332). */
 void k_tick(void);
+/* Called at the end of every tick, in the interrupt handler with the
+ * interrupt mask back at the tick's level (the B-scheduler thread's
+ * watchdog uses it). NULL when unused. */
+extern void (*volatile k_tick_hook)(k_ticks_t now);
 
 /* ---- start-up ---- */
 /* Resets the kernel (no thread runs yet). */

@@ -113,7 +113,10 @@ int kvformat(kformat_emit_fn emit, void *context, const char *fmt, va_list args)
                 p++;
             }
         }
+        /* 'l' reads a long, 'h' (promoted to int anyway) is accepted and ignored. */
+        int long_arg = 0;
         while (*p == 'l' || *p == 'h') {
+            long_arg |= *p == 'l';
             p++;
         }
 
@@ -138,7 +141,7 @@ int kvformat(kformat_emit_fn emit, void *context, const char *fmt, va_list args)
         }
         case 'd':
         case 'i': {
-            int32_t v = (int32_t)va_arg(args, long);
+            int32_t v = long_arg ? (int32_t)va_arg(args, long) : (int32_t)va_arg(args, int);
             /* Negate in unsigned arithmetic: INT32_MIN has no positive int32_t. */
             uint32_t magnitude = v < 0 ? 0u - (uint32_t)v : (uint32_t)v;
             unsigned len = format_unsigned(digits, magnitude, 10, 0);
@@ -146,14 +149,17 @@ int kvformat(kformat_emit_fn emit, void *context, const char *fmt, va_list args)
             break;
         }
         case 'u': {
-            unsigned len = format_unsigned(digits, (uint32_t)va_arg(args, unsigned long), 10, 0);
+            uint32_t v = long_arg ? (uint32_t)va_arg(args, unsigned long)
+                                  : (uint32_t)va_arg(args, unsigned);
+            unsigned len = format_unsigned(digits, v, 10, 0);
             count += emit_field(emit, context, &f, 0, digits, len);
             break;
         }
         case 'x':
         case 'X': {
-            unsigned len = format_unsigned(digits, (uint32_t)va_arg(args, unsigned long), 16,
-                                           *p == 'X');
+            uint32_t v = long_arg ? (uint32_t)va_arg(args, unsigned long)
+                                  : (uint32_t)va_arg(args, unsigned);
+            unsigned len = format_unsigned(digits, v, 16, *p == 'X');
             count += emit_field(emit, context, &f, 0, digits, len);
             break;
         }

@@ -1,6 +1,6 @@
 /*
  * Reset entry, vector table and exception entry of the RoboCube firmware
- * (MC68332 / CPU32, RoboCube v2.0 memory map, see /tmp BOARD contract and
+ * (MC68332 / CPU32, RoboCube v2.0 memory map: see emu/README.md and
  * kernel/arch/cpu32/robocube.ld).
  *
  * At reset CSBOOT maps the flash at address 0 and nothing else is mapped;

@@ -175,6 +175,30 @@ static void test_preemption_of_busy_thread(void **state)
     assert_string_equal(trace, "bSB");
 }
 
+/* ---- changing priorities ---- */
+static void *raiser(void *arg)
+{
+    (void)arg;
+    mark('b');
+    rc[0] = k_thread_setprio(&th[0], 20); /* th[0] now outranks us: runs at once */
+    mark('B');
+    rc[1] = k_thread_setprio(&th[0], 0);
+    rc[2] = k_thread_setprio(&th[0], 5);  /* th[0] has exited */
+    return NULL;
+}
+
+static void test_setprio_preempts(void **state)
+{
+    (void)state;
+    spawn(0, "a", tracer, "a", 5);
+    spawn(1, "b", raiser, NULL, 10);
+    k_start();
+    assert_string_equal(trace, "baB");
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(rc[1], K_EINVAL);
+    assert_int_equal(rc[2], K_ESRCH);
+}
+
 /* ---- yield ---- */
 static void *yielder(void *arg)
 {
@@ -871,6 +895,10 @@ static void test_bsched_thread_and_overrun(void **state)
     assert_int_equal(kb.overruns, 2);
     assert_true(kb.max_cycle_ticks >= 9u);
     assert_non_null(strstr(host_console, "bsched: overrun in minor cycle"));
+    /* announced at the successor's release, while the slow cycle still ran */
+    assert_int_equal(kb.stuck_reports, 1);
+    assert_non_null(strstr(host_console, "still running at its successor's release"));
+    assert_null(k_tick_hook); /* unhooked when the thread stopped */
     assert_int_equal(first_run_tick[0], 1);
 }
 
@@ -895,6 +923,8 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     assert_int_equal(runs_of[0], 50);
     assert_int_equal(k_ticks(), 100);
     assert_null(strstr(host_console, "overrun"));
+    assert_null(strstr(host_console, "still running"));
+    assert_int_equal(kb.stuck_reports, 0);
 }
 
 int main(void)
@@ -906,6 +936,7 @@ int main(void)
         T(test_create_preempts),
         T(test_timeslice_round_robin),
         T(test_preemption_of_busy_thread),
+        T(test_setprio_preempts),
         T(test_yield_round_robin),
         T(test_sleep_until_no_drift),
         T(test_nanosleep_and_clock),

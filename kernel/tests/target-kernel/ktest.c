@@ -380,11 +380,13 @@ static void *controller(void *arg)
     kb.stop_after = 40;
     k_bsched_start(&kb, &bs, process, NULL, 2, stack_a, STACK_BYTES);
     k_thread_join(&kb.thread, NULL, K_FOREVER);
-    k_printf("KTEST cycles=%lu overruns=%lu overrun_events=%lu max_cycle_ticks=%lu runs0=%lu runs1=%lu\n",
+    k_printf("KTEST cycles=%lu overruns=%lu overrun_events=%lu stuck_reports=%lu max_cycle_ticks=%lu runs0=%lu runs1=%lu\n",
              (unsigned long)kb.cycles_run, (unsigned long)kb.overruns,
+             (unsigned long)kb.stuck_reports,
              (unsigned long)kb.overrun_events, (unsigned long)kb.max_cycle_ticks,
              (unsigned long)runs[0], (unsigned long)runs[1]);
     check(kb.overrun_events == 1u, "exactly one cycle overran");
+    check(kb.stuck_reports == 1u, "the late cycle was not announced at its successor's release");
     check(kb.overruns >= 2u, "the 5-tick cycle must miss at least two 2-tick releases");
     check(kb.cycles_run == 40u && runs[0] == 40u && runs[1] == 10u, "cycle accounting");
     finish();
@@ -487,8 +489,9 @@ static void *controller(void *arg)
     r_null = k_sem_post(NULL);
     r_join = k_thread_join(&t_main, NULL, K_FOREVER);
     k_printf("KTEST unlock_not_owner=%d full_queue=%d isr_wait=%d isr_lock=%d isr_send=%d "
-             "relock=%d null_sem=%d self_join=%d\n",
-             r_unlock, r_full, isr_wait_rc, isr_lock_rc, isr_send_rc, r_relock, r_null, r_join);
+             "relock=%d null_sem=%d self_join=%d console_drops=%lu\n",
+             r_unlock, r_full, isr_wait_rc, isr_lock_rc, isr_send_rc, r_relock, r_null, r_join,
+             (unsigned long)k_board_console_dropped());
     check(r_unlock == K_EPERM, "unlock by a non-owner");
     check(r_full == K_EAGAIN, "send to a full queue");
     check(isr_wait_rc == K_EISR && isr_lock_rc == K_EISR && isr_send_rc == K_EISR,

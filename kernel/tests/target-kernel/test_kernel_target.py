@@ -128,6 +128,9 @@ def test_bsched_overrun_detected_and_reported():
     cycle, late, overruns, events = map(int, reports[0])
     assert cycle == 8       # process 1 (pv 2) runs in cycles 0, 4, 8: its 3rd run is slow
     assert late >= 3 and overruns == f["overruns"] and events == 1
+    # announced while it still ran, at the release of cycle 9
+    assert f["stuck_reports"] == 1
+    assert re.search(r"bsched: minor cycle 8 still running at its successor's release", text)
 
 
 def test_stack_guard():
@@ -146,6 +149,7 @@ def test_bad_use_gets_error_codes():
     assert f["full_queue"] == K_EAGAIN
     assert f["isr_wait"] == K_EISR and f["isr_lock"] == K_EISR and f["isr_send"] == K_EISR
     assert f["relock"] == K_EDEADLK and f["null_sem"] == K_EINVAL and f["self_join"] == K_EDEADLK
+    assert f["console_drops"] == 0
     assert "EXCEPTION" not in text
 
 

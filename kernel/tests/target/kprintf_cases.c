@@ -1,7 +1,8 @@
 /*
  * Host-side driver for kernel/lib/kprintf.c: prints each case as
- * "<format>|<ksnprintf result>|<return value>" so test_kprintf_host.py can
- * compare with the C library's snprintf. Also checks truncation.
+ * "<format>|<ksnprintf result>|<return value>" for test_kprintf_host.py,
+ * which compares each with the output printf would give. Also checks
+ * truncation.
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -12,8 +13,8 @@
 #define CASE(fmt, ...)                                                 \
     do {                                                               \
         char buf[64];                                                  \
-        int n = ksnprintf(buf, sizeof buf, fmt, __VA_ARGS__);          \
-        printf("%s|%s|%d\n", fmt, buf, n);                             \
+        int count = ksnprintf(buf, sizeof buf, fmt, __VA_ARGS__);      \
+        printf("%s|%s|%d\n", fmt, buf, count);                         \
     } while (0)
 
 int main(void)

@@ -5,6 +5,7 @@ Environment (set by `make check-firmware-boot`):
   BSCHED_QEMU   the qemu-system-m68k with the robocube machine
   FW_DIR        build/firmware (robocube.elf, tests/fault-*.elf)
   CROSS_PREFIX  m68k-linux-gnu- (objdump, nm, readelf)
+  FW_ICOUNT     the -icount setting `make run` uses
 """
 import json
 import os
@@ -20,6 +21,7 @@ import pytest
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
+ICOUNT = os.environ.get("FW_ICOUNT", "shift=8,sleep=on")   # as `make run` (kernel/firmware.mk)
 FIRMWARE = FW_DIR / "robocube.elf"
 FAULT_IMAGES = {kind: FW_DIR / "tests" / f"fault-{kind}.elf"
                 for kind in ("unmapped", "flashwrite", "illegal", "zerodivide")}
@@ -50,7 +52,7 @@ class Board:
         extra = ["-qmp", f"unix:{qmp_path},server=on,wait=off"] if qmp_path else []
         self.start = time.monotonic()
         self.proc = subprocess.Popen(
-            [QEMU, "-M", "robocube", "-kernel", str(elf), "-display", "none",
+            [QEMU, "-M", "robocube", "-icount", ICOUNT, "-kernel", str(elf), "-display", "none",
              "-monitor", "none", "-serial", "stdio"] + extra,
             stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.output = b""
@@ -273,6 +275,19 @@ def test_images_use_only_cpu32_instructions():
         assert not bad, f"{elf.name}: non-CPU32 instructions: {bad[:20]}"
 
 
+def test_console_baud_variants_compile(tmp_path):
+    """The console rates the driver offers all build; anything else is a clear error."""
+    root = Path(__file__).resolve().parents[3]
+    src = root / "drivers" / "duart_console.c"
+    base = [CROSS + "gcc", "-std=c99", "-mcpu=cpu32", "-Os", "-ffreestanding", "-nostdlib",
+            "-Wall", "-Wextra", "-Werror", f"-I{root}", f"-I{root}/kernel/arch/cpu32", "-c",
+            "-o", str(tmp_path / "console.o"), str(src)]
+    for baud in (57600, 38400, 9600):
+        subprocess.run(base + [f"-DCONSOLE_BAUD={baud}"], check=True)
+    bad = subprocess.run(base + ["-DCONSOLE_BAUD=115200"], capture_output=True, text=True)
+    assert bad.returncode != 0 and "CONSOLE_BAUD must be" in bad.stderr
+
+
 def test_load_addresses_and_reset_vectors(tmp_path):
     for elf in all_images():
         out = subprocess.run([CROSS + "readelf", "-lW", str(elf)], check=True,
@@ -284,6 +299,8 @@ def test_load_addresses_and_reset_vectors(tmp_path):
             if filesz:
                 assert FLASH_BASE <= paddr and paddr + filesz <= FLASH_END, \
                     f"{elf.name}: segment at 0x{paddr:x} is not in flash"
+        # SRAM below 0x400 stays unallocated: no object may sit at address 0 (NULL).
+        assert symbol(elf, "__data_start") >= 0x400 and symbol(elf, "__bss_start") >= 0x400
         # Vector 1 (reset PC) is a flash offset: at reset the flash sits at 0.
         flat = tmp_path / (elf.stem + ".bin")
         subprocess.run([CROSS + "objcopy", "-O", "binary", "-j", ".text", str(elf), str(flat)],

@@ -101,6 +101,28 @@ static int proof_due_at(uint32_t w, uint32_t pv, uint32_t t)
     return (t & proof_mask(pv)) == w;
 }
 
+/* rev_P(x): the low P bits of x in reverse order. A fixed permutation of bits,
+ * so it costs the SAT back end nothing. */
+static uint32_t proof_reverse_p(uint32_t x)
+{
+    uint32_t r = 0u;
+    uint32_t b;
+    for (b = 0u; b < PROOF_P; b++) {
+        r |= ((x >> b) & 1u) << (PROOF_P - 1u - b);
+    }
+    return r;
+}
+
+/* The offset the hand proof assigns to a process with priority value k whose
+ * interval [A, A + 2^-k) starts at A = before / 2^P (Lemmas 1 and 2):
+ * rev_k(offset) = 2^k A mod 2^k, the top k of the P fraction bits of A. As
+ * rev_k of the top k bits of a P-bit number is the low k bits of its rev_P:
+ * offset = rev_P(before mod 2^P) mod 2^k. */
+static uint32_t proof_interval_offset(uint32_t before, uint32_t k)
+{
+    return proof_reverse_p(before & (PROOF_UNIT - 1u)) & proof_mask(k);
+}
+
 /* Execution order key: ascending pv, ties in input order (a stable sort). */
 static uint32_t proof_order_key(const struct proof_set *set, uint32_t index)
 {

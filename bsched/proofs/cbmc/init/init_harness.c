@@ -17,20 +17,6 @@
  */
 #include "proof_model.h"
 
-/* The low `bits` bits of x reversed, bit by bit (bits <= P). */
-static uint32_t spec_reverse(uint32_t x, uint32_t bits)
-{
-    uint32_t r = 0u;
-    uint32_t b;
-    for (b = 0u; b < PROOF_P; b++) {
-        if (b < bits) {
-            /* bit b of x goes to position bits - 1 - b */
-            r |= ((x >> b) & 1u) << (bits - 1u - b);
-        }
-    }
-    return r;
-}
-
 void harness(void)
 {
     static struct bsched s;
@@ -77,10 +63,10 @@ void harness(void)
         if (a < set.n) {
             uint32_t p = s.order[a];
             uint32_t k = set.pv[p];
-            uint32_t below = PROOF_P - k; /* A * 2^k = before >> (P - k) */
-            __CPROVER_assert((before & proof_mask(below)) == 0u,
+            /* A * 2^k is an integer: before is a multiple of 2^(P - k) */
+            __CPROVER_assert((before & proof_mask(PROOF_P - k)) == 0u,
                              "init: each interval starts at a multiple of its length");
-            __CPROVER_assert(spec_reverse(s.offset[p], k) == ((before >> below) & proof_mask(k)),
+            __CPROVER_assert(s.offset[p] == proof_interval_offset(before, k),
                              "init: offset = rev_pv(interval position mod 2^pv)");
             before += PROOF_UNIT >> k;
         }
