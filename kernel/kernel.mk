@@ -48,7 +48,7 @@ K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -ffuncti
                   -fdata-sections -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
                   -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched -I$(ROOT) \
                   -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -MMD -MP
-K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c kernel/arch/cpu32/k_board_robocube.c
+K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c drivers/k_board_robocube.c
 K_TARGET_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(K_TARGET_SRCS)) \
                  $(K_BUILD)/target/obj/kernel/arch/cpu32/switch.S.o
 # Test modes of kernel/tests/target-kernel/ktest.c (KTEST_MODE = position).

@@ -1,5 +1,7 @@
 /*
- * Board glue of the nanokernel on the RoboCube (see k_board.h).
+ * Board support of the nanokernel on the RoboCube: implements the kernel's
+ * board interface (kernel/include/k_board.h) with the drivers of this folder,
+ * so the kernel itself depends on no driver.
  *
  * Console output: threads put bytes into a ring; the DUART's TxRDYB
  * interrupt (level 5, vectored through IVR) moves them to the transmitter
