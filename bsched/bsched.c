@@ -93,7 +93,7 @@ struct bsched_classes {
     ensures maxpv: \result == max_pv(pv, n) <= BSCHED_MAX_PV;
     ensures maxpv_bounds: \forall integer i; 0 <= i < n ==> pv[i] <= \result;
 */
-static uint32_t plan_classes(struct bsched_classes *c, const uint8_t *pv, uint32_t n)
+static uint32_t plan_classes(struct bsched_classes *c, const uint8_t *pv, size_t n)
 {
     uint32_t maxpv = 0u;
     uint32_t first = 0u;
@@ -174,7 +174,7 @@ static uint32_t plan_classes(struct bsched_classes *c, const uint8_t *pv, uint32
     ensures order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
 */
 static void place_processes(struct bsched *s, struct bsched_classes *c,
-                            const uint8_t *pv, uint32_t n)
+                            const uint8_t *pv, size_t n)
 {
     uint32_t i;
 
@@ -228,7 +228,7 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
     ensures fold: \result == perfect_of(pv, n);
     ensures bounds: 1 <= \result <= n;
 */
-static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, uint32_t n)
+static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, size_t n)
 {
     uint32_t carry = 0u;
     uint32_t k;
@@ -322,9 +322,9 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             return BSCHED_ERR_PV_RANGE;
         }
     }
-    maxpv = plan_classes(&classes, pv, n);
-    place_processes(s, &classes, pv, n);
-    perfect = perfect_load(&classes, pv, n);
+    maxpv = plan_classes(&classes, pv, count);
+    place_processes(s, &classes, pv, count);
+    perfect = perfect_load(&classes, pv, count);
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> s->wait[j] == s->offset[j];
         loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
@@ -336,7 +336,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         s->wait[i] = s->offset[i];
     }
     s->perfect = (uint16_t)perfect;
-    s->count = (uint16_t)n;
+    s->count = (uint16_t)count;
     s->maxpv = (uint8_t)maxpv;
     s->cycle = 0u;
     s->ran_count = 0u;

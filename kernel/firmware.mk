@@ -1,5 +1,6 @@
 # RoboCube reference firmware (MC68332 / CPU32): startup, drivers, the
-# Table 1 image, the fault test images, `make run` and the firmware-boot suite.
+# default image (the nanokernel running Table 1 in its B-scheduler thread),
+# the fault test images, `make run` and the firmware-boot suite.
 #
 #   make firmware                       build/firmware/robocube.elf (+ .map, .srec)
 #   make run [RUN_SECONDS=N]            boot it on qemu-system-m68k -M robocube
@@ -30,6 +31,15 @@ FW_BASE_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c \
                 drivers/duart_console.c drivers/pit.c drivers/led.c bsched/bsched.c
 FW_BASE_OBJS := $(patsubst %,$(FW_BUILD)/obj/%.o,$(FW_BASE_SRCS))
 
+# The default image links the nanokernel, compiled here (objects under
+# $(FW_BUILD)/kobj) at the image's own tick rate: 128 Hz instead of the
+# kernel's default 1024 Hz, so that every minor cycle's console line fits in
+# its tick (see kernel/apps/table1.c). The kernel's source list is
+# K_TARGET_SRCS (kernel/kernel.mk, which adds those objects to $(FW_ELF)).
+FW_TICK_HZ       := 128
+FW_KERNEL_CFLAGS := $(FW_CFLAGS) -I$(ROOT)/kernel/include -I$(ROOT)/kernel -DK_TICK_HZ=$(FW_TICK_HZ)
+FW_APP_OBJ       := $(FW_BUILD)/kobj/kernel/apps/table1.c.o
+
 FW_FAULT_KINDS := unmapped flashwrite illegal zerodivide
 FW_FAULT_ELFS  := $(patsubst %,$(FW_BUILD)/tests/fault-%.elf,$(FW_FAULT_KINDS))
 
@@ -47,9 +57,17 @@ $(FW_BUILD)/obj/%.S.o: %.S
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
 
-$(FW_ELF): $(FW_BASE_OBJS) $(FW_BUILD)/obj/kernel/apps/table1.c.o $(FW_LDSCRIPT)
-	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_BUILD)/robocube.map -o $@ \
-	    $(FW_BASE_OBJS) $(FW_BUILD)/obj/kernel/apps/table1.c.o
+$(FW_BUILD)/kobj/%.c.o: %.c
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(FW_KERNEL_CFLAGS) -c -o $@ $<
+
+$(FW_BUILD)/kobj/%.S.o: %.S
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
+
+# kernel/kernel.mk adds the kernel objects as further prerequisites.
+$(FW_ELF): $(FW_BASE_OBJS) $(FW_APP_OBJ) $(FW_LDSCRIPT)
+	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(FW_BUILD)/robocube.map -o $@ $(filter %.o,$^)
 	$(CROSS_OBJCOPY) -O srec $@ $(FW_BUILD)/robocube.srec
 	$(CROSS_SIZE) $@
 

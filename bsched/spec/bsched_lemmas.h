@@ -55,8 +55,7 @@
 */
 
 /*@ ghost
-  /@ requires 0 <= n;
-     assigns \nothing;
+  /@ assigns \nothing;
      ensures count_range: \forall integer i, k; 0 <= i <= n ==>
          0 <= class_count(pv, i, k) <= i;
      ensures count_monotone: \forall integer i, j, k; 0 <= i <= j <= n ==>
@@ -64,9 +63,9 @@
      ensures count_strict: \forall integer i, j; 0 <= i < j <= n ==>
          class_count(pv, i, pv[i]) < class_count(pv, j, pv[i]);
   @/
-  void lemma_count(const uint8_t *pv, int n)
+  void lemma_count(const uint8_t *pv, size_t n)
   {
-    int x = 0;
+    size_t x = 0;
     /@ loop invariant 0 <= x <= n;
        loop invariant \forall integer i, k; 0 <= i <= x ==> 0 <= class_count(pv, i, k) <= i;
        loop invariant \forall integer i, j, k; 0 <= i <= j <= x ==>
@@ -83,12 +82,12 @@
 */
 
 /*@ ghost
-  /@ requires 0 <= m;
+  /@ requires m < 65536;
      assigns \nothing;
      ensures first_step: \forall integer k; 0 <= k <= BSCHED_MAX_PV + 1 ==>
          class_first(pv, m + 1, k) == class_first(pv, m, k) + (pv[m] < k ? 1 : 0);
   @/
-  void lemma_first_step(const uint8_t *pv, int m)
+  void lemma_first_step(const uint8_t *pv, size_t m)
   {
     int x = 0;
     /@ loop invariant 0 <= x <= BSCHED_MAX_PV + 1;
@@ -104,7 +103,7 @@
 */
 
 /*@ ghost
-  /@ requires 0 <= n;
+  /@ requires n <= 65536;
      requires \forall integer i; 0 <= i < n ==> pv[i] <= BSCHED_MAX_PV;
      assigns \nothing;
      ensures first_total: class_first(pv, n, BSCHED_MAX_PV + 1) == n;
@@ -113,9 +112,9 @@
      ensures first_next: \forall integer k; 0 <= k ==>
          class_first(pv, n, k + 1) == class_first(pv, n, k) + class_count(pv, n, k);
   @/
-  void lemma_first(const uint8_t *pv, int n)
+  void lemma_first(const uint8_t *pv, size_t n)
   {
-    int m = 0;
+    size_t m = 0;
     int k = 0;
     lemma_count(pv, n);
     /@ loop invariant 0 <= m <= n;

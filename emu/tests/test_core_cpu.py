@@ -17,6 +17,8 @@ PROGRAM = r"""
     .long 0x00F20800                /* 0: SSP, top of TPURAM */
     .long start - 0xE00000          /* 1: PC through the reset alias at 0 */
     .long berr - 0xE00000           /* 2: bus error */
+    .long aerr - 0xE00000           /* 3: address error */
+    .long ill - 0xE00000            /* 4: illegal instruction */
     .org 0x100
     .long pit - 0xE00000            /* 64: PIT */
     .org 0x400
@@ -32,10 +34,29 @@ start:
 halt:
     bra     halt
 
+/* Illegal instruction: print "ILL" and the stacked format/vector word. */
+ill:
+    movea.l %sp, %a1
+    lea     illmsg(%pc), %a0
+    bsr     puts
+    moveq   #0, %d0
+    move.w  6(%a1), %d0
+    bsr     puthex
+    lea     eol(%pc), %a0
+    bsr     puts
+    bra     halt
+
+/* Address error: same frame as a bus error on the CPU32. */
+aerr:
+    movea.l %sp, %a1
+    lea     aerrmsg(%pc), %a0
+    bra.s   frame
+
 /* Bus error: print "BERR" and the format $C frame words. */
 berr:
     movea.l %sp, %a1
     lea     berrmsg(%pc), %a0
+frame:
     bsr     puts
     moveq   #0, %d0
     move.w  6(%a1), %d0             /* format / vector offset */
@@ -95,6 +116,8 @@ bad:     .asciz "FAIL\r\n"
 hello:   .asciz "HELLO\r\n"
 after:   .asciz "AFTER\r\n"
 berrmsg: .asciz "BERR"
+aerrmsg: .asciz "AERR"
+illmsg:  .asciz "ILL"
 eol:     .asciz "\r\n"
 """
 
@@ -123,7 +146,9 @@ def test_boot_prints_on_console(build_elf):
 @pytest.mark.parametrize("fault, address, ssw", [
     # long read from an undecoded address: RW=1, LG=1, SIZ=00, FUNC=5 (S data)
     ("tst.l 0x00200000", 0x00200000, 0x0065),
-    # byte write to the flash (read-only chip select): RW=0, SIZ=01
+    # byte write to the flash, here at its reset alias (read-only): RW=0, SIZ=01
+    ("move.b #1, 0x00000010", 0x00000010, 0x000D),
+    # the same address range before relocation is simply not decoded
     ("move.b #1, 0x00E00010", 0x00E00010, 0x000D),
     # word read of SRAM space above the boot flash block (CS0/CS1 not programmed)
     ("tst.w 0x00100000", 0x00100000, 0x0055),
@@ -148,6 +173,26 @@ def test_unmapped_instruction_fetch_is_a_bus_error(build_elf):
         assert fmt == 0xC008
         assert fault_addr == 0x00300000
         assert status & 0x7 == 6             # FUNC = supervisor program
+
+
+def test_odd_program_counter_is_an_address_error(build_elf):
+    with run(build_elf, "jmp 0x00000401") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        line = m.console.read_until(b"\r\n", timeout=10).decode()
+        match = re.fullmatch(r"AERR ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8})\r\n",
+                             line)
+        assert match, line
+        fmt, fault_addr, pc, ssw = (int(x, 16) for x in match.groups())
+        assert fmt == 0xC00C                 # format $C, vector 3 (offset 0x0C)
+        assert fault_addr == pc == 0x401
+        assert ssw == 0x0056                 # read, word, supervisor program
+
+
+def test_invalid_effective_address_is_illegal_instruction(build_elf):
+    # 0x41C0 would be LEA %d0,%a0: no such addressing mode.
+    with run(build_elf, ".word 0x41C0") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        assert m.console.read_until(b"\r\n", timeout=10) == b"ILL 00000010\r\n"
 
 
 def test_double_bus_fault_halts_cpu_not_qemu(build_elf):
@@ -226,7 +271,7 @@ relocated:
     movec   %a0, %vbr
     lea     ok(%pc), %a0
     bsr     puts
-    tst.l   0x00100000              /* just above SRAM: bus error */
+    FAULT2
 fail:
     lea     bad(%pc), %a0
     bsr     puts
@@ -235,15 +280,19 @@ halt:
 """
 
 
-def test_relocation_through_tpuram_then_sram_and_vbr(build_elf):
+@pytest.mark.parametrize("fault, address, ssw", [
+    ("tst.l 0x00100000", 0x00100000, 0x0065),       # just above the 1 MiB SRAM
+    ("move.w #1, 0x00E00010", 0x00E00010, 0x0015),  # word write to relocated flash
+])
+def test_relocation_through_tpuram_then_sram_and_vbr(build_elf, fault, address, ssw):
     """The boot dance of BOARD.md with the CPU running: flash at 0 after reset,
     a stub in TPURAM moves it to 0xE00000, SRAM appears at 0 with CS0/CS1,
     VBR points into the relocated flash and a bus error finds its handler there."""
     tail = PROGRAM[PROGRAM.index("/* Bus error: print"):]
-    with qtestlib.start(kernel=build_elf(RELOCATION + tail)) as m:
+    with qtestlib.start(kernel=build_elf(RELOCATION.replace("FAULT2", fault) + tail)) as m:
         assert m.console.read_until(b"RELOC OK\r\n", timeout=10).endswith(b"RELOC OK\r\n")
-        fmt, fault_addr, pc, _ = berr_frame(m)
-        assert (fmt, fault_addr) == (0xC008, 0x00100000)
+        fmt, fault_addr, pc, status = berr_frame(m)
+        assert (fmt, fault_addr, status) == (0xC008, address, ssw)
         assert 0xE00000 <= pc < 0xF00000    # executing from the relocated flash
         assert m.qom_get("/machine/sim", "flash-base") == 0xE00000
         assert m.qom_get("/machine/sim", "sram-base") == 0

@@ -1,72 +1,98 @@
 /*
- * Default firmware image: the paper's Table 1 process set run by the
- * B-scheduler (bsched.c), one minor cycle per PIT tick.
+ * Default firmware image: the nanokernel runs the paper's Table 1 process
+ * set in its B-scheduler thread (kernel/k_bsched.c), one bsched minor cycle
+ * per kernel tick, at the highest application priority.
  *
- * Prints one line per minor cycle, "cycle T: p1.1 p1.3 p3.1", T being the
- * minor cycle within the major cycle (Table 2's numbering), for
- * TABLE1_MAJOR_CYCLES major cycles; then, per process, the period measured
- * from the PIT tick count at each of its actual runs: a process body records
- * the tick number of the PIT interrupt that started the minor cycle it runs
- * in (the main loop reads it once per cycle, so every process of one cycle
- * sees the same tick even if the next interrupt arrives while the cycle is
- * still printing). If the loop falls behind and a tick passes without a
- * minor cycle, that shows up both as "ticks missed" and in the periods.
- * Then the firmware idles and blinks the LED at 1 Hz.
+ * Threads (priority: larger is more urgent):
+ *   bsched         27  one minor cycle per tick, TABLE1_MAJOR_CYCLES major cycles
+ *   bsched-report  26  the kernel's overrun reporter (silent when none occur)
+ *   table1          2  starts the B-scheduler thread, waits for it, prints the summary
+ *   led             1  toggles the LED every 0.5 s once the run is over
  *
- * Tick rate: TABLE1_TICK_HZ = 128 Hz (PITM = 64, 7.8125 ms). The original
- * CubeOS tick was 1024 Hz, but a minor cycle here also prints its line on
- * the polled console (at most 26 characters: 6.8 ms at 38400 baud, 4.5 ms
- * at 57600), which must fit in one tick or minor cycles would fall behind.
+ * Output: one line per minor cycle, "cycle T: p1.1 p1.3 p3.1", T being the
+ * minor cycle within the major cycle (Table 2's numbering), printed by the
+ * process bodies themselves (the first process of a cycle opens the line,
+ * the last one ends it; bsched's s->ran lists the cycle's processes). Then,
+ * per process, the period measured from the kernel tick count (k_ticks())
+ * at each of its actual runs, and the B-scheduler thread's overrun count.
+ *
+ * Tick rate: this image builds the kernel with K_TICK_HZ = 128 (PIT PITM =
+ * 64, 7.8125 ms; kernel/firmware.mk FW_TICK_HZ) instead of the kernel's
+ * default 1024 Hz, because every minor cycle prints its line: up to 26
+ * characters, 6.8 ms at 38400 baud on real hardware, about 2.8 KB/s on
+ * average at 128 Hz, within the console's 3.84 KB/s. At 1024 Hz the console
+ * ring would fill and the B-scheduler thread would wait for it and overrun.
  */
 #include <stdint.h>
 
 #include "bsched.h"
-#include "cpu.h"
+#include "kernel.h"
+#include "k_board.h"
+#include "k_bsched.h"
 #include "drivers/duart_console.h"
 #include "drivers/led.h"
-#include "drivers/pit.h"
-#include "kernel/lib/kprintf.h"
 #include "mc68332.h"
 
-#ifndef TABLE1_TICK_HZ
-#define TABLE1_TICK_HZ 128u
-#endif
 #ifndef TABLE1_MAJOR_CYCLES
 #define TABLE1_MAJOR_CYCLES 4u
 #endif
 
 #define TABLE1_PROCS 9u
+/* One bsched minor cycle per kernel tick. */
+#define TABLE1_CYCLE_TICKS 1u
+/* The LED changes state every half second. */
+#define LED_TOGGLE_TICKS (K_TICK_HZ / 2u)
 
 static const uint8_t table1_pv[TABLE1_PROCS] = {1, 1, 1, 2, 2, 3, 4, 4, 4};
 static const char *const table1_names[TABLE1_PROCS] = {
     "p1.1", "p1.2", "p1.3", "p2.1", "p2.2", "p3.1", "p4.1", "p4.2", "p4.3",
 };
 
-/* What each process observed of its own runs, in PIT ticks. */
+/* What each process observed of its own runs, in kernel ticks. */
 struct run_record {
     uint32_t runs;
-    uint32_t last_tick;
+    k_ticks_t last_tick;
     uint32_t min_period;
     uint32_t max_period;
 };
 
-/* Shared by the process bodies: the tick that started the current minor cycle. */
+/* Shared by the process bodies (all run in the B-scheduler thread). */
 struct table1_run {
-    uint32_t cycle_tick;
+    const struct bsched *sched;
+    uint32_t cycles_seen;      /* minor cycles whose line was opened */
+    k_ticks_t first_cycle_tick;
+    k_ticks_t last_cycle_tick;
     struct run_record records[TABLE1_PROCS];
 };
 
 static struct bsched sched;
 static struct table1_run run;
+static struct k_bsched bsched_thread;
+static struct k_thread table1_thread, led_thread;
+K_STACK_DEFINE(bsched_stack, 2048u);
+K_STACK_DEFINE(table1_stack, 2048u);
+K_STACK_DEFINE(led_stack, 1024u);
 
-/* The process body: every Table 1 process records the tick it runs in and
- * names itself on the cycle's line. */
+/* The process body: every Table 1 process records the tick it runs at and
+ * names itself on its minor cycle's line. bsched_run_cycle has already
+ * stepped: s->ran[0..ran_count-1] are this cycle's processes in execution
+ * order (each once) and s->cycle is the number of the next cycle. */
 static void run_process(void *context, uint16_t index)
 {
     struct table1_run *ctx = context;
+    const struct bsched *s = ctx->sched;
     struct run_record *r = &ctx->records[index];
-    uint32_t now = ctx->cycle_tick;
+    k_ticks_t now = k_ticks();
 
+    if (index == s->ran[0]) {
+        uint32_t major = 1ul << s->maxpv;
+        if (ctx->cycles_seen == 0u) {
+            ctx->first_cycle_tick = now;
+        }
+        ctx->cycles_seen++;
+        ctx->last_cycle_tick = now;
+        k_printf("cycle %lu:", (unsigned long)((s->cycle + major - 1u) & (major - 1u)));
+    }
     if (r->runs > 0u) {
         uint32_t period = now - r->last_tick;
         if (r->runs == 1u || period < r->min_period) {
@@ -78,86 +104,124 @@ static void run_process(void *context, uint16_t index)
     }
     r->runs++;
     r->last_tick = now;
-    kprintf(" %s", table1_names[index]);
+    k_printf(" %s", table1_names[index]);
+    if (index == s->ran[s->ran_count - 1u]) {
+        k_printf("\n");
+    }
 }
 
 static void print_periods(void)
 {
     unsigned i;
 
-    kprintf("measured periods (PIT ticks between consecutive runs):\n");
+    k_printf("measured periods (kernel ticks between consecutive runs):\n");
     for (i = 0; i < TABLE1_PROCS; i++) {
         const struct run_record *r = &run.records[i];
         if (r->runs < 2u) {
-            kprintf("period %s: not measured (%lu run)\n", table1_names[i],
-                    (unsigned long)r->runs);
+            k_printf("period %s: not measured (%lu run)\n", table1_names[i],
+                     (unsigned long)r->runs);
         } else if (r->min_period == r->max_period) {
-            kprintf("period %s: %lu ticks (%lu runs)\n", table1_names[i],
-                    (unsigned long)r->min_period, (unsigned long)r->runs);
+            k_printf("period %s: %lu ticks (%lu runs)\n", table1_names[i],
+                     (unsigned long)r->min_period, (unsigned long)r->runs);
         } else {
-            kprintf("period %s: %lu..%lu ticks, NOT periodic (%lu runs)\n", table1_names[i],
-                    (unsigned long)r->min_period, (unsigned long)r->max_period,
-                    (unsigned long)r->runs);
+            k_printf("period %s: %lu..%lu ticks, NOT periodic (%lu runs)\n", table1_names[i],
+                     (unsigned long)r->min_period, (unsigned long)r->max_period,
+                     (unsigned long)r->runs);
         }
     }
 }
 
-int main(void)
+/* Toggles the LED at absolute tick multiples of LED_TOGGLE_TICKS: no drift. */
+static void *led_main(void *arg)
 {
-    uint32_t minor_cycles, n, tick, start_tick, missed = 0;
-    int32_t rc;
+    k_ticks_t next = k_ticks();
+    (void)arg;
+    for (;;) {
+        int r;
+        next += LED_TOGGLE_TICKS;
+        r = k_sleep_until(next);
+        if (r != K_OK) {
+            k_printf("led: k_sleep_until failed: %d\n", r);
+            return NULL;
+        }
+        led_toggle();
+    }
+}
 
-    console_init();
-    led_init();
-    kprintf("\nRoboCube firmware: B-scheduler, Table 1 process set\n");
-    kprintf("cpu MC68332 %lu Hz, tick %lu Hz, console %lu baud, bsched capacity %u\n",
-            (unsigned long)CPU_CLOCK_HZ, (unsigned long)TABLE1_TICK_HZ,
-            (unsigned long)CONSOLE_BAUD, (unsigned)BSCHED_MAX_PROCS);
+static void *table1_main(void *arg)
+{
+    uint32_t minor_cycles, ticks_spanned;
+    int32_t rc;
+    int r;
+    (void)arg;
 
     rc = bsched_init(&sched, table1_pv, TABLE1_PROCS);
     if (rc != BSCHED_OK) {
-        kprintf("bsched_init failed: %ld\n", (long)rc);
-        return 1;
+        k_printf("bsched_init failed: %ld\n", (long)rc);
+        return NULL;
     }
     minor_cycles = (1ul << sched.maxpv) * TABLE1_MAJOR_CYCLES;
-    kprintf("major cycle %lu minor cycles, at most %u processes per minor cycle\n",
-            (unsigned long)(1ul << sched.maxpv), (unsigned)sched.perfect);
+    k_printf("major cycle %lu minor cycles, at most %u processes per minor cycle\n",
+             (unsigned long)(1ul << sched.maxpv), (unsigned)sched.perfect);
 
-    if (pit_start(TABLE1_TICK_HZ, NULL) != 0) {
-        kprintf("PIT cannot run at %lu Hz\n", (unsigned long)TABLE1_TICK_HZ);
+    run.sched = &sched;
+    bsched_thread.stop_after = minor_cycles;
+    r = k_bsched_start(&bsched_thread, &sched, run_process, &run, TABLE1_CYCLE_TICKS,
+                       bsched_stack, sizeof bsched_stack);
+    if (r != K_OK) {
+        k_printf("k_bsched_start failed: %d\n", r);
+        return NULL;
+    }
+    r = k_thread_join(&bsched_thread.thread, NULL, K_FOREVER);
+    if (r != K_OK) {
+        k_printf("joining the B-scheduler thread failed: %d\n", r);
+        return NULL;
+    }
+
+    ticks_spanned = run.cycles_seen == 0u ? 0u : run.last_cycle_tick - run.first_cycle_tick + 1u;
+    k_printf("ran %lu minor cycles in %lu ticks, %lu ticks missed\n",
+             (unsigned long)run.cycles_seen, (unsigned long)ticks_spanned,
+             (unsigned long)(ticks_spanned - run.cycles_seen));
+    print_periods();
+    k_printf("bsched thread: %lu minor cycles from tick %lu, overruns: %lu, "
+             "longest cycle %lu ticks, console bytes dropped: %lu\n",
+             (unsigned long)bsched_thread.cycles_run, (unsigned long)run.first_cycle_tick,
+             (unsigned long)bsched_thread.overruns, (unsigned long)bsched_thread.max_cycle_ticks,
+             (unsigned long)k_board_console_dropped());
+
+    r = k_thread_create(&led_thread, "led", led_main, NULL, led_stack, sizeof led_stack,
+                        K_PRIO_APP_MIN);
+    if (r != K_OK) {
+        k_printf("creating the LED thread failed: %d\n", r);
+        return NULL;
+    }
+    k_printf("table1 done at tick %lu (%lu ms); LED thread blinks at 1 Hz\n",
+             (unsigned long)k_ticks(), (unsigned long)k_uptime_ms());
+    return NULL;
+}
+
+int main(void)
+{
+    k_init();
+    led_init();
+    if (k_board_init() != 0) {
+        static const char msg[] = "k_board_init failed: no PIT rate for K_TICK_HZ\n";
+        k_console_write_sync(msg, sizeof msg - 1u);
         return 1;
     }
-    cpu32_irq_enable();
-
-    start_tick = tick = pit_wait_tick_after(0);
-    for (n = 0; n < minor_cycles; n++) {
-        if (n > 0u) {
-            uint32_t next = pit_wait_tick_after(tick);
-            missed += next - tick - 1u;
-            tick = next;
-        }
-        if (sched.cycle == 0u) {
-            led_toggle(); /* the LED changes state every major cycle */
-        }
-        kprintf("cycle %lu:", (unsigned long)sched.cycle);
-        run.cycle_tick = tick;
-        rc = bsched_run_cycle(&sched, run_process, &run);
-        kprintf("\n");
-        if (rc < 0) {
-            kprintf("bsched_run_cycle failed: %ld\n", (long)rc);
-            return 1;
-        }
+    /* Queued in the console ring; goes out once k_start enables interrupts. */
+    k_printf("\nRoboCube firmware: B-scheduler, Table 1 process set\n");
+    k_printf("nanokernel: tick %lu Hz, B-scheduler thread at priority %u, %lu tick per minor cycle\n",
+             (unsigned long)K_TICK_HZ, (unsigned)K_PRIO_APP_MAX,
+             (unsigned long)TABLE1_CYCLE_TICKS);
+    k_printf("cpu MC68332 %lu Hz, tick %lu Hz, console %lu baud (interrupt-driven), "
+             "bsched capacity %u\n",
+             (unsigned long)CPU_CLOCK_HZ, (unsigned long)K_TICK_HZ, (unsigned long)CONSOLE_BAUD,
+             (unsigned)BSCHED_MAX_PROCS);
+    if (k_thread_create(&table1_thread, "table1", table1_main, NULL, table1_stack,
+                        sizeof table1_stack, K_PRIO_APP_MIN + 1u) != K_OK) {
+        k_printf("creating the table1 thread failed\n");
     }
-    kprintf("ran %lu minor cycles in %lu ticks, %lu ticks missed\n",
-            (unsigned long)minor_cycles, (unsigned long)(tick - start_tick + 1u),
-            (unsigned long)missed);
-    print_periods();
-    kprintf("table1 done; LED blinks at 1 Hz\n");
-
-    for (;;) {
-        tick = pit_wait_tick_after(tick);
-        if (tick % (TABLE1_TICK_HZ / 2u) == 0u) {
-            led_toggle();
-        }
-    }
+    k_start();
+    return 0;
 }

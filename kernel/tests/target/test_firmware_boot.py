@@ -38,7 +38,8 @@ TABLE2 = [
     "p1.1 p1.3 p4.2", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
 ]
 MAJOR_CYCLES = 4          # TABLE1_MAJOR_CYCLES in kernel/apps/table1.c
-TICK_HZ = 128             # TABLE1_TICK_HZ
+TICK_HZ = 128             # FW_TICK_HZ in kernel/firmware.mk (the image's K_TICK_HZ)
+B_SCHED_PRIORITY = 27     # K_PRIO_APP_MAX in kernel/include/k_config.h
 BOOT_TIME_LIMIT = 20.0    # seconds of wall time for the whole Table 1 run
 FAULT_TIME_LIMIT = 10.0
 
@@ -154,6 +155,9 @@ def test_table1_prints_table2_and_periods(board_factory):
 
     assert "RoboCube firmware: B-scheduler, Table 1 process set" in text
     assert f"tick {TICK_HZ} Hz" in text
+    # The cycles run in the nanokernel's B-scheduler thread, one per kernel tick.
+    assert (f"nanokernel: tick {TICK_HZ} Hz, B-scheduler thread at priority "
+            f"{B_SCHED_PRIORITY}, 1 tick per minor cycle") in text, text
     cycles = re.findall(r"^cycle (\d+):((?: p\d\.\d)*)$", text, re.M)
     assert len(cycles) == 16 * MAJOR_CYCLES, text
     for i, (t, names) in enumerate(cycles):
@@ -172,10 +176,22 @@ def test_table1_prints_table2_and_periods(board_factory):
         runs = 16 * MAJOR_CYCLES // 2 ** pv
         assert periods[name] == f"{2 ** pv} ticks ({runs} runs)", (name, periods[name])
 
+    # The kernel's own accounting of the B-scheduler thread agrees: every
+    # cycle ran, none overran (no report line either), no console byte lost.
+    m = re.search(r"^bsched thread: (\d+) minor cycles from tick (\d+), overruns: (\d+), "
+                  r"longest cycle (\d+) ticks, console bytes dropped: (\d+)$", text, re.M)
+    assert m, text
+    assert int(m.group(1)) == 16 * MAJOR_CYCLES
+    assert int(m.group(3)) == 0, "overruns"
+    assert int(m.group(4)) == 0, "a minor cycle crossed a tick"
+    assert int(m.group(5)) == 0, "console bytes dropped"
+    assert "bsched: overrun" not in text and "still running" not in text
+    assert "failed" not in text and "EXCEPTION" not in text
+
 
 def test_led_blinks_after_table1(board_factory, tmp_path):
-    """After the run the firmware sleeps in STOP between PIT ticks and toggles
-    the port E LED every 64 ticks (0.5 s): sample the board's LED over QMP."""
+    """After the run a kernel thread toggles the port E LED every 64 ticks
+    (0.5 s; the CPU idles in STOP in between): sample the board's LED over QMP."""
     board = board_factory(FIRMWARE, qmp_path=tmp_path / "qmp.sock")
     board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
     samples = []

@@ -20,8 +20,17 @@
  *     defers one), in execution order, and returns their number;
  *   - afterwards the state is the invariant's state for t + 1 (cycle wraps at
  *     2^maxpv), and nothing else in the state changed.
+ *
+ * With -DPROOF_STATE_FROM_INIT=1 the offsets come from bsched_init instead of
+ * the closed form (slower: init is then part of the formula). The negative
+ * check uses it with the unbalanced mutant of bsched.c, to show the balance
+ * assertions can fail.
  */
 #include "proof_model.h"
+
+#ifndef PROOF_STATE_FROM_INIT
+#define PROOF_STATE_FROM_INIT 0
+#endif
 
 void harness(void)
 {
@@ -43,6 +52,10 @@ void harness(void)
     __CPROVER_assume((t >> set.maxpv) == 0u); /* t < 2^maxpv */
     next = (t + 1u) & proof_mask(set.maxpv);
 
+#if PROOF_STATE_FROM_INIT
+    rc = bsched_init(&s, set.pv, (size_t)set.n);
+    __CPROVER_assert(rc == BSCHED_OK, "step: a valid set is accepted");
+#endif
     /* The state at the start of cycle t. ran[] and ran_count keep whatever they
      * held: bsched_step must not depend on them. */
     s.count = (uint16_t)set.n;
@@ -51,7 +64,11 @@ void harness(void)
     s.cycle = t;
     for (i = 0u; i < PROOF_N; i++) {
         if (i < set.n) {
+#if PROOF_STATE_FROM_INIT
+            uint32_t w = s.offset[i];
+#else
             uint32_t w = proof_interval_offset(before, set.pv[i]);
+#endif
             before += PROOF_UNIT >> set.pv[i];
             s.pv[i] = set.pv[i];
             s.order[i] = (uint16_t)i;
