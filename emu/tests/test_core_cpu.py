@@ -188,6 +188,24 @@ def test_odd_program_counter_is_an_address_error(build_elf):
         assert ssw == 0x0056                 # read, word, supervisor program
 
 
+@pytest.mark.parametrize("fault, address, ssw", [
+    ("move.w 0x00F20001, %d0", 0x00F20001, 0x0055),   # read, S data
+    ("move.l %d0, 0x00F20003", 0x00F20003, 0x0015),   # write, S data
+])
+def test_odd_data_address_is_an_address_error(build_elf, fault, address, ssw):
+    # A long at a word boundary is fine on the CPU32; only odd addresses fault.
+    prologue = "move.l #0x11223344, 0x00F20002\n    tst.l 0x00F20002\n    "
+    with run(build_elf, prologue + fault) as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        line = m.console.read_until(b"\r\n", timeout=10).decode()
+        match = re.fullmatch(r"AERR ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8}) ([0-9A-F]{8})\r\n",
+                             line)
+        assert match, line
+        fmt, fault_addr, pc, status = (int(x, 16) for x in match.groups())
+        assert (fmt, fault_addr, status) == (0xC00C, address, ssw)
+        assert 0x400 < pc < 0x1000           # the faulting instruction (boot alias)
+
+
 def test_invalid_effective_address_is_illegal_instruction(build_elf):
     # 0x41C0 would be LEA %d0,%a0: no such addressing mode.
     with run(build_elf, ".word 0x41C0") as m:
