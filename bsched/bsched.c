@@ -127,12 +127,15 @@ static uint32_t plan_classes(struct bsched_classes *c, const uint8_t *pv, size_t
         }
     }
     /*@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
-        loop invariant first == class_first(pv, n, k) <= k * BSCHED_MAX_PROCS;
+        loop invariant first_is_sum: first == class_first(pv, n, k);
+        loop invariant first_bound: first <= k * BSCHED_MAX_PROCS;
         loop invariant \forall integer j; 0 <= j < k ==> c->next[j] == class_first(pv, n, j);
         loop assigns k, first, c->next[0 .. BSCHED_MAX_PV];
         loop variant BSCHED_MAX_PV + 1 - k;
     */
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        /*@ assert size_bound: c->size[k] <= n; */
+        /*@ assert first_step: class_first(pv, n, k + 1) == first + c->size[k]; */
         c->next[k] = first;
         first += c->size[k];
     }
@@ -207,7 +210,10 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
         uint8_t pvi = pv[i];
         uint32_t wait;
         /*@ assert rank_below_size: class_count{Pre}(pv, i, pvi) < class_count{Pre}(pv, n, pvi); */
-        /*@ assert slot_in_class: c->next[pvi] < class_first{Pre}(pv, n, pvi + 1) <= n; */
+        /*@ assert class_next: class_first{Pre}(pv, n, pvi + 1) ==
+                class_first{Pre}(pv, n, pvi) + class_count{Pre}(pv, n, pvi); */
+        /*@ assert slot_in_class: c->next[pvi] < class_first{Pre}(pv, n, pvi + 1); */
+        /*@ assert class_in_order: class_first{Pre}(pv, n, pvi + 1) <= n; */
         s->order[c->next[pvi]] = (uint16_t)i;
         c->next[pvi]++;
         /*@ assert cursor_bound: c->cursor[pvi] < pow2(pvi) + BSCHED_MAX_PROCS; */
@@ -215,6 +221,8 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
         /*@ assert wait_closed: wait == init_wait{Pre}(pv, n, i); */
         s->offset[i] = wait;
         c->cursor[pvi]++;
+        /*@ assert count_step: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+                class_count{Pre}(pv, i + 1, k) == class_count{Pre}(pv, i, k) + (pv[i] == k ? 1 : 0); */
     }
 }
 
@@ -247,7 +255,11 @@ static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, 
     for (k = BSCHED_MAX_PV; k > 0u; k--) {
         carry = (c->size[k] + carry + 1u) / 2u;
     }
-    /*@ assert class_first(pv, n, 1) == c->size[0]; */
+    /*@ assert k == 0; */
+    /*@ assert carry_is_fold: carry == carry_from(pv, n, 1); */
+    /*@ assert first_1: class_first(pv, n, 1) == c->size[0]; */
+    /*@ assert sum_bound: c->size[0] + carry <= n; */
+    /*@ assert sum_positive: carry == 0 ==> c->size[0] == n; */
     return c->size[0] + carry;
 }
 
@@ -340,6 +352,11 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     s->maxpv = (uint8_t)maxpv;
     s->cycle = 0u;
     s->ran_count = 0u;
+    /*@ assert wf_sizes: 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
+            1 <= s->perfect <= s->count && s->cycle < pow2(s->maxpv); */
+    /*@ assert wf_procs: \forall integer j; 0 <= j < s->count ==>
+            s->pv[j] <= s->maxpv && s->wait[j] < pow2(s->pv[j]) && s->offset[j] < pow2(s->pv[j]); */
+    /*@ assert wf_order: \forall integer id; 0 <= id < s->count ==> s->order[id] < s->count; */
     return BSCHED_OK;
 }
 
