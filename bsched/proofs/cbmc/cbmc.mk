@@ -23,7 +23,7 @@ CBMC_ARGS_step           := N=12 P=6
 CBMC_HARNESS_init-sorted := init
 CBMC_ARGS_init-sorted    := ORDERS=sorted N=12 P=6
 CBMC_HARNESS_major_cycle := major_cycle
-CBMC_ARGS_major_cycle    := N=6 P=3
+CBMC_ARGS_major_cycle    := N=5 P=3
 CBMC_HARNESS_init        := init
 CBMC_ARGS_init           := ORDERS=any N=6 P=3
 CBMC_HARNESS_errors      := errors
@@ -54,11 +54,11 @@ cbmc_sub = $(MAKE) --no-print-directory -s -C $(CBMC_PROOFS)/$(1) ROOT=$(ROOT) B
 
 # Each run writes build/cbmc/<run>/ (OUT), whatever the harness folder.
 $(addprefix cbmc-run-,$(CBMC_RUNS)): cbmc-run-%:
-	@$(call cbmc_sub,$(CBMC_HARNESS_$*)) $(CBMC_ARGS_$*) OUT_NAME=$*
+	+@$(call cbmc_sub,$(CBMC_HARNESS_$*)) $(CBMC_ARGS_$*) OUT_NAME=$*
 $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)): cbmc-mutant-%:
-	@$(call cbmc_sub,$*) $(CBMC_MUTANT_ARGS_$*) MUTANT=1 OUT_NAME=$*-mutant
+	+@$(call cbmc_sub,$*) $(CBMC_MUTANT_ARGS_$*) MUTANT=1 OUT_NAME=$*-mutant
 $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)): cbmc-deep-%:
-	@$(call cbmc_sub,$(CBMC_HARNESS_$*)) $(CBMC_DEEP_ARGS_$*) OUT_NAME=$* OUT=$(BUILD)/cbmc-deep/$*
+	+@$(call cbmc_sub,$(CBMC_HARNESS_$*)) $(CBMC_DEEP_ARGS_$*) OUT_NAME=$* OUT=$(BUILD)/cbmc-deep/$*
 
 # $(call cbmc_record,SUITE,RESULT-DIRS): counts PASS/other in each dir's result.txt
 # (a missing result counts as failed) and records the suite; fails if any failed.
@@ -75,20 +75,20 @@ CBMC_MUTANT_RESULT_DIRS := $(addprefix $(BUILD)/cbmc/,$(addsuffix -mutant,$(CBMC
 check-cbmc:
 	@$(SETUP) cbmc
 	@rm -f $(addsuffix /result.txt,$(CBMC_RESULT_DIRS))
-	@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) || true
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) || true
 	@$(call cbmc_record,cbmc,$(CBMC_RESULT_DIRS))
 
 check-cbmc-negative:
 	@$(SETUP) cbmc
 	@rm -f $(addsuffix /result.txt,$(CBMC_MUTANT_RESULT_DIRS))
-	@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) || true
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) || true
 	@$(call cbmc_record,cbmc-negative,$(CBMC_MUTANT_RESULT_DIRS))
 
 # Both suites in one pool of CBMC_JOBS, then both records.
 cbmc:
 	@$(SETUP) cbmc
 	@rm -f $(addsuffix /result.txt,$(CBMC_RESULT_DIRS) $(CBMC_MUTANT_RESULT_DIRS))
-	@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) \
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) \
 	    $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) || true
 	@ok=0; { $(call cbmc_record,cbmc,$(CBMC_RESULT_DIRS)); } || ok=1; \
 	{ $(call cbmc_record,cbmc-negative,$(CBMC_MUTANT_RESULT_DIRS)); } || ok=1; exit $$ok
@@ -97,5 +97,5 @@ cbmc-deep: check-cbmc-deep
 check-cbmc-deep:
 	@$(SETUP) cbmc
 	@rm -f $(addsuffix /result.txt,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
-	@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)) || true
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)) || true
 	@$(call cbmc_record,cbmc-deep,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
