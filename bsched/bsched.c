@@ -198,7 +198,7 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
         loop invariant next_is_slot: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
             c->next[k] == class_first{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
         loop invariant cursor_is_rank: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
-            c->cursor[k] == class_start{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
+            c->cursor[k] == \at(c->cursor[k], Pre) + class_count{Pre}(pv, i, k);
         loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
             s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
         loop invariant order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
@@ -209,20 +209,21 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
     for (i = 0u; i < n; i++) {
         uint8_t pvi = pv[i];
         uint32_t wait;
+        /*@ assert count_step: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+                class_count{Pre}(pv, i + 1, k) == class_count{Pre}(pv, i, k) + (pv[i] == k ? 1 : 0); */
         /*@ assert rank_below_size: class_count{Pre}(pv, i, pvi) < class_count{Pre}(pv, n, pvi); */
         /*@ assert class_next: class_first{Pre}(pv, n, pvi + 1) ==
                 class_first{Pre}(pv, n, pvi) + class_count{Pre}(pv, n, pvi); */
         /*@ assert slot_in_class: c->next[pvi] < class_first{Pre}(pv, n, pvi + 1); */
-        /*@ assert class_in_order: class_first{Pre}(pv, n, pvi + 1) <= n; */
+        /*@ assert first_total: class_first{Pre}(pv, n, BSCHED_MAX_PV + 1) == n; */
+        /*@ assert class_in_order: class_first{Pre}(pv, n, pvi + 1) <= class_first{Pre}(pv, n, BSCHED_MAX_PV + 1); */
         s->order[c->next[pvi]] = (uint16_t)i;
-        c->next[pvi]++;
         /*@ assert cursor_bound: c->cursor[pvi] < pow2(pvi) + BSCHED_MAX_PROCS; */
         wait = reverse_bits(c->cursor[pvi] % period_of(pvi), pvi);
         /*@ assert wait_closed: wait == init_wait{Pre}(pv, n, i); */
         s->offset[i] = wait;
+        c->next[pvi]++;
         c->cursor[pvi]++;
-        /*@ assert count_step: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
-                class_count{Pre}(pv, i + 1, k) == class_count{Pre}(pv, i, k) + (pv[i] == k ? 1 : 0); */
     }
 }
 
@@ -437,7 +438,7 @@ int32_t bsched_step(struct bsched *s)
 }
 
 /* Not analysed by WP: the process bodies are called through a pointer, which
- * WP cannot follow (see bsched/proofs/wp/README and the proof report). */
+ * WP cannot follow without a `calls` clause; make prove skips it (README "Proofs"). */
 int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
 {
     int32_t ran;

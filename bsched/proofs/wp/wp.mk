@@ -7,12 +7,14 @@
 WP_DIR      := $(BUILD)/wp
 WP_SPEC     := bsched/spec/bsched_logic.h bsched/spec/bsched_lemmas.h
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
-# Order: the prover that wins most goals first (measured, see README "Proofs").
-WP_PROVERS  ?= z3-qi,cvc4,z3,cvc5
+# Order: the prover that wins most goals first (measured 2026-11-21: of 735 goals, Qed
+# closes 484, CVC4 177, Z3 with bounded instantiation 71, CVC5 2; plain Z3 won
+# none and is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
+WP_PROVERS  ?= cvc4,z3-qi,cvc5
 WP_TIMEOUT  ?= 10
 WP_PAR      ?= 2
 # The full run has more goals than this; fewer means something was not analysed.
-WP_MIN_GOALS ?= 600
+WP_MIN_GOALS ?= 700
 WP_DEFINES  ?=
 WP_FCT      ?=
 WP_OUT      ?= $(WP_DIR)
@@ -20,7 +22,7 @@ WP_EXPECT_FAIL ?=
 export WHY3CONFIG := $(BSCHED_TOOLS)/why3/why3.conf
 
 WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
-	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) -wp-par $(WP_PAR) \
+	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) -wp-fct-timeout place_processes:30 -wp-par $(WP_PAR) \
 	-wp-verbose 1 -wp-cache none $(if $(WP_FCT),-wp-fct $(WP_FCT),-wp-skip-fct bsched_run_cycle) \
 	-wp-report-json $(WP_OUT)/wp.json
 

@@ -19,7 +19,7 @@ from collections import defaultdict
 GOAL_LINE = re.compile(
     r"^\[wp\] \[(?P<prover>[^\]]+)\] Goal (?P<goal>\S+)(?: : (?P<status>\w+)(?P<rest>.*))?$")
 # After '[wp] [Failed] Goal NAME', one indented line per prover tried.
-ATTEMPT_LINE = re.compile(r"^  (?P<prover>[A-Za-z0-9 .]+): (?P<status>\w+)(?P<rest>.*)$")
+ATTEMPT_LINE = re.compile(r"^  (?P<prover>[A-Za-z][^:]*): (?P<status>\w+)(?P<rest>.*)$")
 TIME = re.compile(r"\((?:Qed:)?([0-9.]+)(ms|s)\)")
 # Goal names are typed_<function>_<kind...>; lemma goals are typed_lemma_<name>.
 KINDS = [
@@ -28,6 +28,15 @@ KINDS = [
     ("requires", "call precondition"), ("assert", "assert"), ("complete", "behaviors"),
     ("disjoint", "behaviors"), ("terminates", "termination"), ("exits", "ensures"),
 ]
+
+
+def short(prover):
+    """Column names: qed, z3-qi, z3, cvc4, cvc5 (the -wp-prover names)."""
+    p = prover.lower()
+    if p == "qed":
+        return "qed"
+    name = p.split()[0]
+    return name + ("-qi" if "(qi)" in p else "")
 
 
 def seconds(rest):
@@ -123,24 +132,24 @@ def main():
     for g in goals.values():
         func, kind = classify(g["goal"], functions)
         g["function"], g["kind"] = func, kind
-        key = g["prover"] if g["status"] == "Valid" else "NOT PROVEN"
+        key = short(g["prover"]) if g["status"] == "Valid" else "NOT PROVEN"
         provers.add(key)
         table[(func, kind)][key] += 1
     cols = sorted(p for p in provers if p != "NOT PROVEN") + (["NOT PROVEN"] if "NOT PROVEN" in provers else [])
 
     print("\nWP goals per function, property kind and prover")
-    header = "%-22s %-18s" % ("function", "property") + "".join("%12s" % c[:12] for c in cols) + "%8s" % "total"
+    header = "%-22s %-18s" % ("function", "property") + "".join("%11s" % c for c in cols) + "%8s" % "total"
     print(header)
     print("-" * len(header))
     totals = defaultdict(int)
     for (func, kind) in sorted(table):
         row = table[(func, kind)]
-        print("%-22s %-18s" % (func, kind) + "".join("%12d" % row.get(c, 0) for c in cols)
+        print("%-22s %-18s" % (func, kind) + "".join("%11d" % row.get(c, 0) for c in cols)
               + "%8d" % sum(row.values()))
         for c in cols:
             totals[c] += row.get(c, 0)
     print("-" * len(header))
-    print("%-41s" % "all" + "".join("%12d" % totals[c] for c in cols) + "%8d" % sum(totals.values()))
+    print("%-41s" % "all" + "".join("%11d" % totals[c] for c in cols) + "%8d" % sum(totals.values()))
 
     unproven = sorted(g["goal"] for g in goals.values() if g["status"] != "Valid")
     expected = set(args.expect_fail)
