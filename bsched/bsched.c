@@ -66,8 +66,9 @@ static uint32_t period_of(uint8_t pv)
 */
 static int plausible_state(const struct bsched *s)
 {
-    /* count - 1 < MAX covers both bounds and stays meaningful when MAX is 65535. */
-    return (uint32_t)s->count - 1u < (uint32_t)BSCHED_MAX_PROCS &&
+    /* count - 1 < MAX is the upper bound in a form that stays meaningful (no
+     * always-true comparison) when MAX is 65535; count != 0 first, so it never wraps. */
+    return s->count != 0u && (uint32_t)s->count - 1u < (uint32_t)BSCHED_MAX_PROCS &&
            s->maxpv <= BSCHED_MAX_PV && s->perfect >= 1u;
 }
 
@@ -198,7 +199,7 @@ static void place_processes(struct bsched *s, struct bsched_classes *c,
         loop invariant next_is_slot: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
             c->next[k] == class_first{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
         loop invariant cursor_is_rank: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
-            c->cursor[k] == \at(c->cursor[k], Pre) + class_count{Pre}(pv, i, k);
+            c->cursor[k] == class_start{Pre}(pv, n, k) + class_count{Pre}(pv, i, k);
         loop invariant offset_closed: \forall integer j; 0 <= j < i ==>
             s->offset[j] == init_wait{Pre}(pv, n, j) && s->offset[j] < pow2(pv[j]);
         loop invariant order_range: \forall integer id; 0 <= id < n ==> s->order[id] < n;
