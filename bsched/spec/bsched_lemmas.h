@@ -35,6 +35,24 @@
 */
 
 /*@ ghost
+  /@ assigns \nothing;
+     ensures pow2_positive: \forall integer b; b <= 62 ==> pow2(b) >= 1;
+  @/
+  void lemma_pow2_positive(void)
+  {
+    int x = 0;
+    /@ loop invariant 0 <= x <= 62;
+       loop invariant \forall integer b; b <= x ==> pow2(b) >= 1;
+       loop assigns x;
+       loop variant 62 - x;
+    @/
+    while (x < 62) {
+      x = x + 1;
+    }
+  }
+*/
+
+/*@ ghost
   /@ requires 0 <= a <= b <= 62;
      assigns \nothing;
      ensures pow2_split: pow2(b) == pow2(a) * pow2(b - a);
@@ -157,6 +175,162 @@
     while (a <= m) {
       lemma_pow2_split(a, m);
       a = a + 1;
+    }
+  }
+*/
+
+/*@ ghost
+  /@ requires d > 0 && 0 <= r < d && x == d * q + r;
+     assigns \nothing;
+     ensures div_is: x / d == q;
+     ensures mod_is: x % d == r;
+  @/
+  void lemma_div_unique(uint64_t x, uint64_t d, uint64_t q, uint64_t r)
+  {
+    /@ assert identity: x == d * (x / d) + x % d && 0 <= x % d < d && x / d >= 0; @/
+    /@ assert difference: d * (q - x / d) == x % d - r; @/
+    /@ assert small: -d < d * (q - x / d) < d; @/
+    /@ assert zero: q - x / d == 0; @/
+  }
+*/
+
+/*@ ghost
+  /@ requires p > 0 && big == p * q && big <= 4294967296 && w <= 4294967296;
+     requires x + 1 <= big && c == (x + 1) % big;
+     assigns \nothing;
+     ensures wrap: (c + w) % p == (x + 1 + w) % p;
+  @/
+  void lemma_cycle_wrap(uint64_t c, uint64_t w, uint64_t x, uint64_t p, uint64_t q,
+                        uint64_t big)
+  {
+    // Either the counter did not wrap (c == x + 1), or it wrapped from
+    // big == p * q to 0, and big + w is q whole periods of p past w.
+    if (x + 1 < big) {
+      /@ assert no_wrap: c == x + 1; @/
+    } else {
+      /@ assert wrapped: x + 1 == big && c == 0; @/
+      /@ assert split: w == p * (w / p) + w % p && 0 <= w % p < p && w / p >= 0; @/
+      /@ assert regroup: big + w == p * (q + w / p) + w % p; @/
+      lemma_div_unique(big + w, p, q + w / p, w % p);
+    }
+  }
+*/
+
+/*@ ghost
+  /@ requires p > 0 && 0 <= w < p && 0 <= o < p && (t + w) % p == o;
+     assigns \nothing;
+     ensures phase_due: w == 0 <==> t % p == o;
+  @/
+  void lemma_phase_due(uint64_t p, uint64_t t, uint64_t w, uint64_t o)
+  {
+    /@ assert ids: t == p * (t / p) + t % p && 0 <= t % p < p &&
+           t + w == p * ((t + w) / p) + o; @/
+    /@ assert diff: p * ((t + w) / p - t / p) == t % p + w - o; @/
+  }
+*/
+
+/* The three facts bsched_step needs about residues, stated for periods
+ * 2^k given by their exponent, so that its ghost code passes plain C values. */
+/*@ ghost
+  /@ requires 0 <= k <= BSCHED_MAX_PV && w < pow2(k) && o < pow2(k);
+     requires (t + w) % pow2(k) == o;
+     assigns \nothing;
+     ensures due_iff_zero: w == 0 <==> t % pow2(k) == o;
+  @/
+  void lemma_due_iff_zero(uint64_t t, uint64_t w, uint64_t o, int k)
+  {
+    uint64_t p = (uint64_t)1 << k;
+    lemma_pow2(BSCHED_MAX_PV);
+    /@ assert p == pow2(k) && p >= 1; @/
+    lemma_phase_due(p, t, w, o);
+  }
+*/
+
+/*@ ghost
+  /@ requires 0 <= k <= BSCHED_MAX_PV && t <= 4294967296;
+     assigns \nothing;
+     ensures full_period: (t + pow2(k)) % pow2(k) == t % pow2(k);
+  @/
+  void lemma_full_period(uint64_t t, int k)
+  {
+    uint64_t p = (uint64_t)1 << k;
+    lemma_pow2(BSCHED_MAX_PV);
+    /@ assert p == pow2(k) && 1 <= p <= 2147483648; @/
+    /@ assert t == p * (t / p) + t % p && 0 <= t % p < p; @/
+    lemma_div_unique(t + p, p, t / p + 1u, t % p);
+  }
+*/
+
+/*@ ghost
+  /@ requires 0 <= k <= m <= BSCHED_MAX_PV && w <= 4294967296;
+     requires x + 1 <= pow2(m) && c == (x + 1) % pow2(m);
+     assigns \nothing;
+     ensures wrap: (c + w) % pow2(k) == (x + 1 + w) % pow2(k);
+  @/
+  void lemma_wrap_pow2(uint64_t c, uint64_t w, uint64_t x, int k, int m)
+  {
+    uint64_t p = (uint64_t)1 << k;
+    uint64_t q = (uint64_t)1 << (m - k);
+    uint64_t big = (uint64_t)1 << m;
+    lemma_pow2(BSCHED_MAX_PV);
+    lemma_pow2_split(k, m);
+    /@ assert p == pow2(k) && q == pow2(m - k) && big == pow2(m) && big == p * q && p >= 1 &&
+           big <= 2147483648; @/
+    lemma_cycle_wrap(c, w, x, p, q, big);
+  }
+*/
+
+/*@ ghost
+  /@ requires \valid_read(s) && 0 <= n <= BSCHED_MAX_PROCS;
+     assigns \nothing;
+     ensures zero_monotone: \forall integer a, b; 0 <= a <= b <= n ==>
+         zero_slots(s, a) <= zero_slots(s, b);
+     ensures zero_strict: \forall integer a, d; 0 <= a <= d < n && s->wait[s->order[d]] == 0 ==>
+         zero_slots(s, a) < zero_slots(s, n);
+  @/
+  void lemma_zero_slots(struct bsched *s, uint32_t n)
+  {
+    uint32_t x = 0;
+    /@ loop invariant 0 <= x <= n;
+       loop invariant \forall integer a, b; 0 <= a <= b <= x ==>
+           zero_slots(s, a) <= zero_slots(s, b);
+       loop invariant \forall integer a, d; 0 <= a <= d < x && s->wait[s->order[d]] == 0 ==>
+           zero_slots(s, a) < zero_slots(s, x);
+       loop assigns x;
+       loop variant n - x;
+    @/
+    while (x < n) {
+      x = x + 1;
+    }
+  }
+*/
+
+/* Back in phase for cycle t + 1 after a step: a process that ran restarts a
+ * full period (t + 2^pv == t mod 2^pv), the others counted down by one; the
+ * cycle counter wraps at 2^maxpv, a multiple of every period. */
+/*@ ghost
+  /@ requires \valid_read(s) && 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV;
+     requires \forall integer q; 0 <= q < s->count ==> s->pv[q] <= s->maxpv;
+     requires \forall integer q; 0 <= q < s->count ==> s->wait[q] < pow2(s->pv[q]);
+     requires t + 1 <= pow2(s->maxpv) && s->cycle == (t + 1) % pow2(s->maxpv);
+     requires \forall integer q; 0 <= q < s->count ==>
+         (s->wait[q] + 1 == pow2(s->pv[q]) && t % pow2(s->pv[q]) == s->offset[q]) ||
+         (t + s->wait[q] + 1) % pow2(s->pv[q]) == s->offset[q];
+     assigns \nothing;
+     ensures in_phase: in_phase(s);
+  @/
+  void lemma_next_phase(struct bsched *s, uint32_t t)
+  {
+    uint32_t g;
+    /@ loop invariant 0 <= g <= s->count;
+       loop invariant \forall integer r; 0 <= r < g ==>
+           (s->cycle + s->wait[r]) % pow2(s->pv[r]) == s->offset[r];
+       loop assigns g;
+       loop variant s->count - g;
+    @/
+    for (g = 0u; g < s->count; g++) {
+      lemma_full_period(t, s->pv[g]);
+      lemma_wrap_pow2(s->cycle, s->wait[g], t, s->pv[g], s->maxpv);
     }
   }
 */

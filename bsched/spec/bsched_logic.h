@@ -24,11 +24,14 @@
   // 2^k for k >= 0.
   logic integer pow2(integer k) = k <= 0 ? 1 : 2 * pow2(k - 1);
 
-  // Bit reversal, stated arithmetically: take the lowest bit of `rest` n
-  // times and shift it into `acc` from the right. rev(k, x) = rev_k(x).
-  logic integer rev_acc(integer n, integer rest, integer acc) =
-      n <= 0 ? acc : rev_acc(n - 1, rest / 2, acc * 2 + rest % 2);
-  logic integer rev(integer k, integer x) = rev_acc(k, x, 0);
+  // Bit b of x (x >= 0), stated arithmetically.
+  logic integer bit_of(integer x, integer b) = (x / pow2(b)) % 2;
+
+  // Bit reversal, stated arithmetically: rev(k, x) = rev_k(x), the low k bits
+  // of x in reverse order (bit b of x becomes bit k-1-b of the result). Built
+  // from the top: rev_(k+1)(x) = 2 * rev_k(x) + bit k of x, which is also how
+  // reverse_bits computes it, one bit per iteration.
+  logic integer rev(integer k, integer x) = k <= 0 ? 0 : 2 * rev(k - 1, x) + bit_of(x, k - 1);
 
   // c_k over the prefix pv[0 .. n-1]: how many of them have priority value k.
   logic integer class_count{L}(uint8_t *pv, integer n, integer k) =
@@ -48,11 +51,21 @@
       k <= 0 ? 0
              : 2 * ((class_start{L}(pv, n, k - 1) + class_count{L}(pv, n, k - 1)) % pow2(k - 1));
 
+  // Fig. 6 maps the position x of a class-k member to its initial wait by bit
+  // reversal. The negative check builds a deliberately wrong variant
+  // (-DBSCHED_MUTANT_NO_REVERSE: the identity, in the code and here); then
+  // everything up to bsched_init still proves, and the balance proof fails.
+#ifdef BSCHED_MUTANT_NO_REVERSE
+  logic integer fig6_map(integer k, integer x) = x;
+#else
+  logic integer fig6_map(integer k, integer x) = rev(k, x);
+#endif
+
   // The initial wait of process i among pv[0 .. n-1] (Fig. 6 in closed form):
   // member j = class_count(pv, i, k) of class k = pv[i] gets rev_k((s_k + j) mod 2^k).
   // For class 0 this is rev_0(..) = 0.
   logic integer init_wait{L}(uint8_t *pv, integer n, integer i) =
-      rev(pv[i], (class_start{L}(pv, n, pv[i]) + class_count{L}(pv, i, pv[i])) % pow2(pv[i]));
+      fig6_map(pv[i], (class_start{L}(pv, n, pv[i]) + class_count{L}(pv, i, pv[i])) % pow2(pv[i]));
 
   // The perfect fold of bsched_init: carry_k = ceil((c_k + carry_(k+1)) / 2)
   // for k = 31 down to 1, carry_32 = 0; perfect = c_0 + carry_1.
@@ -71,11 +84,39 @@
   logic integer max_pv{L}(uint8_t *pv, integer n) =
       n <= 0 ? 0 : (pv[n - 1] > max_pv{L}(pv, n - 1) ? pv[n - 1] : max_pv{L}(pv, n - 1));
 
-  // Residues are unchanged by adding whole periods (used for the wrap of the
-  // cycle counter at the end of a major cycle). Proven by WP like any goal.
-  lemma mod_add_period: \forall integer x, p; p > 0 && x >= 0 ==> (x + p) % p == x % p;
-  lemma mod_add_periods: \forall integer x, p, q; p > 0 && q >= 0 && x >= 0 ==>
-      (x + p * q) % p == x % p;
+  // ---- Balance (../../shared/notes/why-b-schedules-are-balanced.md) ----
+  // The hand proof's interval picture, per class. Class k's c_k processes sit
+  // side by side after the lower classes, each 2^-k of a minor cycle wide.
+
+  // B_k: the area of the classes below k, in units of 2^-k of a minor cycle:
+  // B_0 = 0, B_(k+1) = 2 * (B_k + c_k). Member j of class k starts at B_k + j.
+  logic integer class_area{L}(uint8_t *pv, integer n, integer k) =
+      k <= 0 ? 0 : 2 * (class_area{L}(pv, n, k - 1) + class_count{L}(pv, n, k - 1));
+
+  // The area of all classes, in units of 2^-31: U * 2^31 with U = sum_i 2^-pv_i.
+  logic integer total_area{L}(uint8_t *pv, integer n) =
+      class_area{L}(pv, n, BSCHED_MAX_PV) + class_count{L}(pv, n, BSCHED_MAX_PV);
+
+  // below(k, r, x) = #{ m >= 0 : r + m * 2^k < x }, for 0 <= r < 2^k and x >= 0:
+  // how many of the positions 0 .. x-1 are r modulo 2^k, i.e. ceil((x - r) / 2^k)
+  // (0 when x <= r).
+  logic integer below(integer k, integer r, integer x) = (x - r + pow2(k) - 1) / pow2(k);
+
+  // hits(k, b, c, r) = #{ j < c : (b + j) mod 2^k == r }: the members of a class
+  // of c processes of priority k, starting at position b, that sit at residue r.
+  logic integer hits(integer k, integer b, integer c, integer r) =
+      c <= 0 ? 0 : hits(k, b, c - 1, r) + ((b + c - 1) % pow2(k) == r ? 1 : 0);
+
+  // The processes due in minor cycle t (t >= 0), counted class by class: member
+  // j of class k is due iff rev_k(t mod 2^k) == (B_k + j) mod 2^k. load_upto
+  // counts classes 0 .. k-1; load counts them all.
+  logic integer load_upto{L}(uint8_t *pv, integer n, integer t, integer k) =
+      k <= 0 ? 0
+             : load_upto{L}(pv, n, t, k - 1) +
+               hits(k - 1, class_area{L}(pv, n, k - 1), class_count{L}(pv, n, k - 1),
+                    rev(k - 1, t % pow2(k - 1)));
+  logic integer load{L}(uint8_t *pv, integer n, integer t) =
+      load_upto{L}(pv, n, t, BSCHED_MAX_PV + 1);
 
   // ---- The scheduler state ----
 
@@ -98,6 +139,37 @@
   predicate in_phase{L}(struct bsched *s) =
       \forall integer i; 0 <= i < s->count ==>
           (s->cycle + s->wait[i]) % pow2(s->pv[i]) == s->offset[i];
+
+  // order[] is the stable sort by priority value: slot d holds the process
+  // whose sorted position is d, and every process sits at its sorted position.
+  predicate sorted_order{L}(struct bsched *s) =
+      (\forall integer d; 0 <= d < s->count ==>
+           s->order[d] < s->count && sorted_pos{L}(&s->pv[0], s->count, s->order[d]) == d) &&
+      (\forall integer i; 0 <= i < s->count ==>
+           0 <= sorted_pos{L}(&s->pv[0], s->count, i) < s->count &&
+           s->order[sorted_pos{L}(&s->pv[0], s->count, i)] == i);
+
+  // The offsets are Fig. 6's initial waits of the set in s->pv.
+  predicate closed_form{L}(struct bsched *s) =
+      \forall integer i; 0 <= i < s->count ==>
+          s->offset[i] == init_wait{L}(&s->pv[0], s->count, i);
+
+  // How many of the slots order[0 .. d-1] hold a process due in cycle t
+  // (t = offset mod 2^pv): the processes bsched_step finds due, in its order.
+  logic integer due_slots{L}(struct bsched *s, integer t, integer d) =
+      d <= 0 ? 0
+             : due_slots{L}(s, t, d - 1) +
+               (t % pow2(s->pv[s->order[d - 1]]) == s->offset[s->order[d - 1]] ? 1 : 0);
+
+  // How many of the slots order[0 .. d-1] hold a process whose wait is 0.
+  logic integer zero_slots{L}(struct bsched *s, integer d) =
+      d <= 0 ? 0 : zero_slots{L}(s, d - 1) + (s->wait[s->order[d - 1]] == 0 ? 1 : 0);
+
+  // Everything bsched_init establishes and bsched_step keeps: the state is well
+  // formed, in phase, sorted and in closed form, and perfect is the fold.
+  predicate scheduled{L}(struct bsched *s) =
+      well_formed(s) && in_phase(s) && sorted_order(s) && closed_form(s) &&
+      s->perfect == perfect_of{L}(&s->pv[0], s->count);
 
   // Process i ran in the last step.
   predicate ran_last{L}(struct bsched *s, integer i) =

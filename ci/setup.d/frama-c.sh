@@ -9,14 +9,17 @@
 apt_install frama-c-base why3 z3 cvc4 cvc5
 why3_dir="$BSCHED_TOOLS/why3"
 why3_conf="$why3_dir/why3.conf"
-cvc5_driver="$BSCHED_ROOT/bsched/proofs/wp/cvc5.drv"
-# The stamp names the driver path and solver versions: a moved checkout or an
-# upgraded solver re-runs the detection, anything else returns at once.
-want="v3 $cvc5_driver $(dpkg-query -W -f='${Version} ' why3 z3 cvc4 cvc5 2>/dev/null)"
+# The driver is copied next to the configuration, so that checkouts in other
+# folders (a clean clone, CI) share one configuration without re-detecting.
+cvc5_driver="$why3_dir/cvc5.drv"
+# The stamp names the driver's content and the solver versions: a changed driver
+# or an upgraded solver re-runs the detection, anything else returns at once.
+want="v4 $(sha256sum < "$BSCHED_ROOT/bsched/proofs/wp/cvc5.drv" | cut -c1-16) $(dpkg-query -W -f='${Version} ' why3 z3 cvc4 cvc5 2>/dev/null)"
 if [ ! -f "$why3_conf" ] || [ "$(cat "$why3_dir/stamp" 2>/dev/null)" != "$want" ]; then
     echo "ci/setup: why3 config detect -> $why3_conf" >&2
     mkdir -p "$why3_dir"
     rm -f "$why3_conf"
+    cp "$BSCHED_ROOT/bsched/proofs/wp/cvc5.drv" "$cvc5_driver"
     WHY3CONFIG="$why3_conf" why3 config detect >&2
     # Why3 turns a solver that exceeds its memory limit (default 1000 MB) into a
     # failure, and WP then stops trying the next prover on that goal. 4000 MB is
