@@ -10,6 +10,9 @@
 #include "spec/bsched_lemmas.h"
 #include "spec/bsched_order.h"
 #include "spec/bsched_fold.h"
+#include "spec/bsched_rev.h"
+#include "spec/bsched_balance.h"
+#include "spec/bsched_slots.h"
 
 /* The low `bits` bits of x in reverse order (Fig. 6's reverse()).
  * BSCHED_MUTANT_NO_REVERSE builds a deliberately wrong variant (identity
@@ -31,6 +34,7 @@ static uint32_t reverse_bits(uint32_t x, uint32_t bits)
     uint32_t rest = x;
     uint32_t b;
     /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_div_pow2_half(); */
     /*@ loop invariant b_range: 0 <= b <= bits;
         loop invariant reversed_so_far: reversed == rev(b, x);
         loop invariant rest_is_shifted: rest == x / pow2(b);
@@ -281,6 +285,8 @@ static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, 
         loop variant k;
     */
     for (k = BSCHED_MAX_PV; k > 0u; k--) {
+        /*@ assert class_step: class_first(pv, n, k + 1) == class_first(pv, n, k) + c->size[k]; */
+        /*@ assert fold_fits: (c->size[k] + carry + 1) / 2 + class_first(pv, n, k) <= n; */
         carry = (c->size[k] + carry + 1u) / 2u;
     }
     /*@ assert k == 0; */
@@ -330,6 +336,9 @@ static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, 
           s->wait[i] == s->offset[i] < pow2(pv[i]);
       ensures ok_order_range: \forall integer id; 0 <= id < count ==> s->order[id] < count;
       ensures ok_perfect: s->perfect == perfect_of{Pre}(pv, count);
+      ensures ok_perfect_ceil: s->perfect ==
+          (area(&s->pv[0], count) + pow2(BSCHED_MAX_PV) - 1) / pow2(BSCHED_MAX_PV);
+      ensures ok_scheduled: scheduled(s);
       ensures ok_sorted: sorted_order(s);
       ensures ok_closed: closed_form(s);
     complete behaviors;
@@ -435,6 +444,29 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             0 <= sorted_pos(&s->pv[0], count, j) < n && s->order[sorted_pos(&s->pv[0], count, j)] == j; */
     /*@ assert closed: \forall integer j; 0 <= j < n ==>
             s->offset[j] == init_wait(&s->pv[0], count, j); */
+    /*@ ghost
+      int c = BSCHED_MAX_PV + 1;
+      /@ loop invariant c_range: 1 <= c <= BSCHED_MAX_PV + 1;
+         loop invariant same_carry: \forall integer k0; c <= k0 <= BSCHED_MAX_PV + 1 ==>
+             carry_from(&s->pv[0], count, k0) == \at(carry_from(pv, count, k0), Pre);
+         loop assigns c;
+         loop variant c;
+      @/
+      while (c > 1) {
+        c = c - 1;
+      }
+    */
+    /*@ assert same_perfect: perfect_of(&s->pv[0], count) == \at(perfect_of(pv, count), Pre); */
+    /*@ ghost lemma_scheduled(s); */
+    /* perfect = ceil(U), U = sum_i 2^-pv_i (spec/bsched_fold.h). */
+    /*@ ghost lemma_fold(&s->pv[0], count); */
+    /*@ ghost lemma_area_regroup(&s->pv[0], count); */
+    /*@ assert perfect_is_fold: s->perfect == perfect_of(&s->pv[0], count); */
+    /*@ assert perfect_is_ceil: s->perfect ==
+            (total_area(&s->pv[0], count) + pow2(BSCHED_MAX_PV) - 1) / pow2(BSCHED_MAX_PV); */
+    /*@ assert area_is_total: area(&s->pv[0], count) == total_area(&s->pv[0], count); */
+    /*@ assert perfect_is_area: s->perfect ==
+            (area(&s->pv[0], count) + pow2(BSCHED_MAX_PV) - 1) / pow2(BSCHED_MAX_PV); */
     return BSCHED_OK;
 }
 

@@ -335,4 +335,20 @@
   }
 */
 
+/* The parts of scheduled(s), one goal each where this is called. */
+/*@ ghost
+  /@ requires \valid_read(s);
+     requires part_well_formed: well_formed(s);
+     requires part_in_phase: in_phase(s);
+     requires part_sorted: sorted_order(s);
+     requires part_closed: closed_form(s);
+     requires part_perfect: s->perfect == perfect_of(&s->pv[0], s->count);
+     assigns \nothing;
+     ensures scheduled: scheduled(s);
+  @/
+  void lemma_scheduled(struct bsched *s)
+  {
+  }
+*/
+
 #endif /* BSCHED_SPEC_LEMMAS_H */

@@ -56,16 +56,20 @@ check-wp:
 	if [ $$rc -eq 0 ]; then $(call record,wp,1,0); else $(call record,wp,0,1); fi; \
 	[ $$rc -eq 0 ]
 
-# Negative check: with reverse_bits swapped for the identity, the proof of
-# the initial waits (reverse_bits 'reversal', hence bsched_init's closed form
-# of Fig. 6 that the balance argument rests on) must fail, and `make prove`
-# with it. WP_FCT keeps this run to the functions that see the mutant.
-WP_MUTANT_GOALS := typed_reverse_bits_ensures_reversal
+# Negative check: with -DBSCHED_MUTANT_NO_REVERSE, reverse_bits is the identity and
+# the spec's fig6_map with it (bsched_logic.h), so bsched_init still meets its (mutant)
+# closed form; the proof of the balance theorem must then fail where it ties the waits
+# of the schedule to the balanced residues (bsched_slots.h: member j of class k is due
+# iff rev_k(t mod 2^k) is its position). WP_FCT keeps this run to those functions.
+WP_MUTANT_FCT := lemma_slots_disjoint,lemma_slots_div_unique,lemma_slots_mod_sum,lemma_slots_due,\
+lemma_slots_init_wait,lemma_slots_slot,lemma_slots_all,lemma_slots_step,lemma_slots_class,\
+lemma_slots_by_class,reverse_bits
+WP_MUTANT_GOALS := typed_lemma_slots_init_wait_ensures_init_wait_def
 check-wp-negative:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_DIR)
 	@$(MAKE) --no-print-directory prove WP_DEFINES=-DBSCHED_MUTANT_NO_REVERSE \
-	    WP_FCT=reverse_bits WP_MIN_GOALS=5 WP_OUT=$(WP_DIR)/mutant \
+	    WP_FCT=$(WP_MUTANT_FCT) WP_MIN_GOALS=150 WP_OUT=$(WP_DIR)/mutant \
 	    > $(WP_DIR)/mutant.log 2>&1; rc=$$?; \
 	cat $(WP_DIR)/mutant.log; \
 	failed=$$(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(" ".join(g["goal"] for g in r["goals"] if g["status"]!="Valid"))' $(WP_DIR)/mutant/report.json 2>/dev/null); \
