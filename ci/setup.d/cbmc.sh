@@ -5,9 +5,10 @@
 # The system libc and the system apt state are never touched: apt runs with a
 # private sources list, state and cache under $BSCHED_TOOLS/cbmc/apt.
 cbmc_dir="$BSCHED_TOOLS/cbmc"
-cbmc_pkgs="cbmc libc6 libstdc++6 libgcc-s1 minisat"
+# kissat: the external SAT solver of the balance and step harnesses (Makefile.common).
+cbmc_pkgs="cbmc libc6 libstdc++6 libgcc-s1 minisat kissat"
 cbmc_stamp="$cbmc_dir/.installed"
-if [ -x "$cbmc_dir/bin/cbmc" ] && [ -x "$cbmc_dir/bin/goto-cc" ] && \
+if [ -x "$cbmc_dir/bin/cbmc" ] && [ -x "$cbmc_dir/bin/goto-cc" ] && [ -x "$cbmc_dir/bin/kissat" ] && \
    [ "$(cat "$cbmc_stamp" 2>/dev/null)" = "$cbmc_pkgs" ]; then
     return 0
 fi
@@ -52,7 +53,7 @@ if [ -z "$loader" ]; then
 fi
 # minisat puts libminisat.so.2 in usr/lib, the runtime libraries are in the multiarch dir.
 libpath="$cbmc_dir/root/usr/lib/x86_64-linux-gnu:$cbmc_dir/root/usr/lib"
-for tool in cbmc goto-cc goto-instrument goto-analyzer; do
+for tool in cbmc goto-cc goto-instrument goto-analyzer kissat; do
     [ -x "$cbmc_dir/root/usr/bin/$tool" ] || continue
     # The library path is given to the loader for this process only (no LD_LIBRARY_PATH),
     # so programs cbmc starts (the host preprocessor) keep using the system libc.
@@ -68,4 +69,7 @@ case "$version" in
     6.*) echo "ci/setup: cbmc $version installed" >&2 ;;
     *) echo "ci/setup: cbmc: expected version 6.x, got '$version'" >&2; exit 1 ;;
 esac
+if ! "$cbmc_dir/bin/kissat" --version >/dev/null 2>&1; then
+    echo "ci/setup: cbmc: kissat does not start" >&2; exit 1
+fi
 echo "$cbmc_pkgs" > "$cbmc_stamp"

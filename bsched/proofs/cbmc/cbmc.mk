@@ -3,25 +3,57 @@
 # on its own); this fragment runs them with the bounds below.
 #
 #   make cbmc            every harness at the default bounds + the negative check
-#   make cbmc-deep       the harnesses at the deep bounds (long; not part of make check)
+#   make cbmc-deep       the full-simulation harnesses at larger bounds (long; not in make check)
 #   make check-cbmc      suite `cbmc`: the harnesses at the default bounds
 #   make check-cbmc-negative  suite `cbmc-negative`: the unbalanced mutant
 #                        (-DBSCHED_MUTANT_NO_REVERSE) must be caught, with a trace
+#   make cbmc-report     HTML reports (cbmc-viewer) of the runs in build/cbmc/
 # CBMC's output for each run: build/cbmc/<run>[-mutant]/cbmc.log (deep runs:
-# build/cbmc-deep/). CBMC_JOBS harnesses run at once (default 2).
+# build/cbmc-deep/). CBMC_JOBS runs at once (default 2).
 
 CBMC_PROOFS := $(ROOT)/bsched/proofs/cbmc
 CBMC_JOBS   ?= 2
 
+# The default bounds. balance and step (the inductive step and the balance
+# theorem on the closed form) run at the goal bounds, CBMC_N processes and
+# priority values 0..CBMC_P; init (that bsched_init yields the closed form, the
+# base case) at CBMC_INIT_N, CBMC_INIT_P, as far as the time budget allows;
+# make cbmc-deep runs init at the goal bounds too.
+CBMC_N      ?= 16
+CBMC_P      ?= 8
+CBMC_INIT_N ?= 12
+CBMC_INIT_P ?= 6
+
 # Runs: name -> harness folder and Make arguments (N = most processes, P = largest
-# priority value). Longest first, so that with -j2 the two long ones overlap.
-# Measured times: /tmp/readme-sections/cbmc.md (README). init-sorted and step share
-# their bounds: together they cover every cycle of every multiset within them.
-CBMC_RUNS := step init-sorted major_cycle init errors
+# priority value). Together, for every multiset within the bounds (one ascending
+# input order each):
+#   init-sorted-<part>-n<k>  bsched_init on every set of exactly k processes, one
+#                        part of its properties per run (state, perfect, offsets:
+#                        see init/init_harness.c and init/Makefile; one SAT instance
+#                        per n and part is far faster than one for all n and parts);
+#   balance              every cycle t of the closed-form offsets is balanced;
+#   step                 bsched_step keeps the periodicity invariant from t to t+1.
+# The rest: major_cycle (full simulation, every input order) and init with every
+# input order at small bounds, and errors. Longest runs first, so that with -j2
+# the long ones overlap.
+CBMC_INIT_PARTS := state perfect offsets
+# $(call cbmc_init_runs,PREFIX,N): the run names PREFIX-<part>-n<k>, k = N..1
+cbmc_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC_INIT_PARTS),$(1)-$(part)-n$(n)))
+define cbmc_init_run
+CBMC_HARNESS_$(1)-$(2)-n$(3) := init
+CBMC_ARGS_$(1)-$(2)-n$(3)    := ORDERS=sorted PARTS=$(2) EXACT_N=$(3) N=$(4) P=$(5)
+endef
+# $(call cbmc_define_init_runs,PREFIX,N,P)
+cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC_INIT_PARTS),\
+    $(eval $(call cbmc_init_run,$(1),$(part),$(n),$(2),$(3)))))
+
+CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
+$(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
+CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
 CBMC_HARNESS_step        := step
-CBMC_ARGS_step           := N=12 P=6
-CBMC_HARNESS_init-sorted := init
-CBMC_ARGS_init-sorted    := ORDERS=sorted N=12 P=6
+CBMC_ARGS_step           := N=$(CBMC_N) P=$(CBMC_P)
+CBMC_HARNESS_balance     := balance
+CBMC_ARGS_balance        := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_major_cycle := major_cycle
 CBMC_ARGS_major_cycle    := N=5 P=3
 CBMC_HARNESS_init        := init
@@ -30,25 +62,29 @@ CBMC_HARNESS_errors      := errors
 CBMC_ARGS_errors         := N=8
 
 # The negative check: the unbalanced mutant must be caught by every harness that
-# runs bsched_init (step builds its state from bsched_init for this).
-CBMC_MUTANT_RUNS := major_cycle init step
+# runs bsched_init (balance takes its offsets from bsched_init for this).
+CBMC_MUTANT_RUNS := major_cycle init balance
 CBMC_MUTANT_ARGS_major_cycle := N=4 P=3
 CBMC_MUTANT_ARGS_init        := ORDERS=any N=4 P=3
-CBMC_MUTANT_ARGS_step        := N=4 P=3 EXTRA_DEFINES=-DPROOF_STATE_FROM_INIT=1
+CBMC_MUTANT_ARGS_balance     := N=4 P=3 EXTRA_DEFINES=-DPROOF_STATE_FROM_INIT=1
 
-# make cbmc-deep: the goal bounds (N <= 16, P <= 8) where they are not yet affordable.
-CBMC_DEEP_RUNS := step init-sorted major_cycle init errors
-CBMC_DEEP_ARGS_step        := N=16 P=8
-CBMC_DEEP_ARGS_init-sorted := ORDERS=sorted N=16 P=8
+# make cbmc-deep: bsched_init at the goal bounds (the base case of the chain, so
+# that with balance and step every multiset within CBMC_N, CBMC_P is covered), the
+# full-simulation cross-check and every input order at larger bounds.
+CBMC_DEEP_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_N))
+$(call cbmc_define_init_runs,deep-init-sorted,$(CBMC_N),$(CBMC_P))
+CBMC_DEEP_RUNS := $(CBMC_DEEP_INIT_RUNS) major_cycle init errors
 CBMC_DEEP_ARGS_major_cycle := N=12 P=5
 CBMC_DEEP_ARGS_init        := ORDERS=any N=8 P=4
 CBMC_DEEP_ARGS_errors      := N=16
+$(foreach r,$(CBMC_DEEP_INIT_RUNS),$(eval CBMC_DEEP_ARGS_$(r) := $(CBMC_ARGS_deep-$(r))))
+$(foreach r,$(CBMC_DEEP_RUNS),$(eval CBMC_DEEP_HARNESS_$(r) := $(or $(CBMC_HARNESS_deep-$(r)),$(r))))
 
 CHECKS += cbmc cbmc-negative
 
 cbmc_sub = $(MAKE) --no-print-directory -s -C $(CBMC_PROOFS)/$(1) ROOT=$(ROOT) BUILD=$(BUILD)
 
-.PHONY: cbmc cbmc-deep check-cbmc check-cbmc-negative check-cbmc-deep
+.PHONY: cbmc cbmc-deep check-cbmc check-cbmc-negative check-cbmc-deep cbmc-report
 .PHONY: $(addprefix cbmc-run-,$(CBMC_RUNS)) $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) \
         $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS))
 
@@ -58,7 +94,7 @@ $(addprefix cbmc-run-,$(CBMC_RUNS)): cbmc-run-%:
 $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)): cbmc-mutant-%:
 	+@$(call cbmc_sub,$*) $(CBMC_MUTANT_ARGS_$*) MUTANT=1 OUT_NAME=$*-mutant
 $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)): cbmc-deep-%:
-	+@$(call cbmc_sub,$(CBMC_HARNESS_$*)) $(CBMC_DEEP_ARGS_$*) OUT_NAME=$* OUT=$(BUILD)/cbmc-deep/$*
+	+@$(call cbmc_sub,$(CBMC_DEEP_HARNESS_$*)) $(CBMC_DEEP_ARGS_$*) OUT_NAME=$* OUT=$(BUILD)/cbmc-deep/$*
 
 # $(call cbmc_record,SUITE,RESULT-DIRS): counts PASS/other in each dir's result.txt
 # (a missing result counts as failed) and records the suite; fails if any failed.
@@ -92,6 +128,13 @@ cbmc:
 	    $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) || true
 	@ok=0; { $(call cbmc_record,cbmc,$(CBMC_RESULT_DIRS)); } || ok=1; \
 	{ $(call cbmc_record,cbmc-negative,$(CBMC_MUTANT_RESULT_DIRS)); } || ok=1; exit $$ok
+
+# HTML reports (cbmc-viewer) of the runs already in build/cbmc/ (and build/cbmc-deep/):
+# build/cbmc/<run>/html/html/index.html. Re-runs nothing; not part of make check.
+cbmc-report:
+	@$(SETUP) base cbmc
+	@$(CBMC_PROOFS)/report.sh $(BSCHED_TOOLS) $(ROOT) \
+	    $(patsubst %/cbmc.log,%,$(wildcard $(BUILD)/cbmc/*/cbmc.log $(BUILD)/cbmc-deep/*/cbmc.log))
 
 cbmc-deep: check-cbmc-deep
 check-cbmc-deep:

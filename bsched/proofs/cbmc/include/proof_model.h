@@ -5,6 +5,8 @@
  *   BSCHED_MAX_PROCS  N: the library capacity, also the largest process count tried
  *   PROOF_MAX_PV      P: the largest priority value tried (0 <= P <= 8 keeps the
  *                     fixed-point sums below in 32 bits: N * 2^P <= 65535 * 256)
+ *   PROOF_EXACT_N     optional: only sets of exactly this many processes (1..N);
+ *                     a Makefile then runs one CBMC job per n (see Makefile.common)
  *
  * The specification side is written from the paper and the hand proof
  * (/work/shared/notes/why-b-schedules-are-balanced.md), not from bsched.c:
@@ -57,7 +59,13 @@ struct proof_set {
 static void proof_nondet_set(struct proof_set *set)
 {
     uint32_t i;
+#ifdef PROOF_EXACT_N
+    /* One process count per run (the runs for n = 1..N together cover 1..N):
+     * smaller SAT instances, all loop conditions on n concrete. */
+    set->n = PROOF_EXACT_N;
+#else
     set->n = nondet_uint32();
+#endif
     __CPROVER_assume(set->n >= 1u && set->n <= PROOF_N);
     set->maxpv = 0u;
     set->area = 0u;
@@ -121,6 +129,24 @@ static uint32_t proof_reverse_p(uint32_t x)
 static uint32_t proof_interval_offset(uint32_t before, uint32_t k)
 {
     return proof_reverse_p(before & (PROOF_UNIT - 1u)) & proof_mask(k);
+}
+
+/* A checked lemma: asserted (CBMC reports it like any other property, and a
+ * run where it fails fails the check), then assumed, so that the properties
+ * after it may use it. This splits one hard SAT question into local steps. */
+/* (A block, not do-while(0): that would be one more loop in the unwind set.) */
+#define PROOF_LEMMA(cond, name) \
+    { \
+        __CPROVER_assert((cond), name); \
+        __CPROVER_assume((cond)); \
+    }
+
+/* Laps below y: #{m >= 0 : x + m 2^P < y}, for a point x < 2^P of the circle
+ * [0, 2^P) unrolled onto [0, U 2^P): floor(y / 2^P) + (y mod 2^P > x).
+ * Only a shift, a mask and a comparison. */
+static uint32_t proof_laps_below(uint32_t y, uint32_t x)
+{
+    return (y >> PROOF_MAX_PV) + (((y & (PROOF_UNIT - 1u)) > x) ? 1u : 0u);
 }
 
 /* Execution order key: ascending pv, ties in input order (a stable sort). */

@@ -1,36 +1,28 @@
 /*
- * CBMC harness `step`: the inductive step of periodicity and the balance
- * theorem, for an arbitrary minor cycle t of an arbitrary priority set, without
- * simulating the cycles before t.
+ * CBMC harness `step`: the inductive step of periodicity, for an arbitrary
+ * minor cycle t of an arbitrary priority set, without simulating the cycles
+ * before t.
  *
- * The state is built from the specification, not by running bsched_init: for
- * ascending input (one input order per multiset, so order[] is the identity),
- * each process gets the offset of the hand proof's closed form
- * (proof_interval_offset), and at the start of cycle t the periodicity
- * invariant gives every wait:
- *     wait_i = (w_i - t) mod 2^pv_i,   cycle = t,   0 <= t < 2^maxpv.
- * The `init` harness checks that bsched_init produces exactly these offsets
- * (and waits = offsets, cycle = 0: the invariant at t = 0) for every input
- * order, so `init` + `step` together cover every cycle of every major cycle.
+ * The state is any state the periodicity invariant allows at the start of
+ * cycle t, for ascending input (one input order per multiset, so order[] is
+ * the identity):
+ *     offset_i = any w_i < 2^pv_i,   wait_i = (w_i - t) mod 2^pv_i,
+ *     cycle = t < 2^maxpv,   perfect = any value in 1..n that is at least the
+ *     number of processes due at t, #{i : t = w_i mod 2^pv_i}.
+ * The last condition is what the balance theorem provides: `balance` checks
+ * that with the offsets bsched_init computes (the closed form, checked by
+ * `init`) at most ceil(U) processes are due in every cycle, and `init` that
+ * perfect = ceil(U). So `init` (the invariant at t = 0), `balance` and `step`
+ * together cover every cycle of every major cycle, at the same bounds.
+ * Everything here holds for any offsets, so the closed form is not needed.
  *
  * Checks:
- *   - balance: the number of processes due at t, #{i : t = w_i mod 2^pv_i},
- *     is floor(U) or ceil(U) -- for every t at once, t being nondeterministic;
  *   - bsched_step runs exactly the due processes (the `perfect` cap never
  *     defers one), in execution order, and returns their number;
  *   - afterwards the state is the invariant's state for t + 1 (cycle wraps at
  *     2^maxpv), and nothing else in the state changed.
- *
- * With -DPROOF_STATE_FROM_INIT=1 the offsets come from bsched_init instead of
- * the closed form (slower: init is then part of the formula). The negative
- * check uses it with the unbalanced mutant of bsched.c, to show the balance
- * assertions can fail.
  */
 #include "proof_model.h"
-
-#ifndef PROOF_STATE_FROM_INIT
-#define PROOF_STATE_FROM_INIT 0
-#endif
 
 void harness(void)
 {
@@ -38,9 +30,9 @@ void harness(void)
     struct proof_set set;
     uint32_t due[BSCHED_MAX_PROCS];
     uint32_t offset[BSCHED_MAX_PROCS];
-    uint32_t before = 0u;
     uint32_t due_count = 0u;
     uint32_t listed = 0u;
+    uint32_t perfect;
     uint32_t t;
     uint32_t next;
     uint32_t i;
@@ -51,37 +43,33 @@ void harness(void)
     t = nondet_uint32();
     __CPROVER_assume((t >> set.maxpv) == 0u); /* t < 2^maxpv */
     next = (t + 1u) & proof_mask(set.maxpv);
+    perfect = nondet_uint32();
+    __CPROVER_assume(perfect >= 1u && perfect <= set.n);
 
-#if PROOF_STATE_FROM_INIT
-    rc = bsched_init(&s, set.pv, (size_t)set.n);
-    __CPROVER_assert(rc == BSCHED_OK, "step: a valid set is accepted");
-#endif
-    /* The state at the start of cycle t. ran[] and ran_count keep whatever they
-     * held: bsched_step must not depend on them. */
+    /* The state at the start of cycle t. ran[] and ran_count hold anything (the
+     * last cycle's record): bsched_step must not depend on them. */
+    s.ran_count = nondet_uint16();
     s.count = (uint16_t)set.n;
     s.maxpv = (uint8_t)set.maxpv;
-    s.perfect = (uint16_t)set.load_hi;
+    s.perfect = (uint16_t)perfect;
     s.cycle = t;
+    /* Entries at and after n are filled too (the library never reads them):
+     * then order[id] = id is a constant for CBMC, and so are the indices
+     * bsched_step derives from it. */
     for (i = 0u; i < PROOF_N; i++) {
-        if (i < set.n) {
-#if PROOF_STATE_FROM_INIT
-            uint32_t w = s.offset[i];
-#else
-            uint32_t w = proof_interval_offset(before, set.pv[i]);
-#endif
-            before += PROOF_UNIT >> set.pv[i];
-            s.pv[i] = set.pv[i];
-            s.order[i] = (uint16_t)i;
-            s.offset[i] = w;
-            offset[i] = w;
-            s.wait[i] = proof_wait_at(w, set.pv[i], t);
-            due[i] = (uint32_t)proof_due_at(w, set.pv[i], t);
-            due_count += due[i];
-        }
+        uint32_t w = nondet_uint32();
+        __CPROVER_assume((w >> set.pv[i]) == 0u); /* w < 2^pv */
+        s.pv[i] = set.pv[i];
+        s.order[i] = (uint16_t)i;
+        s.offset[i] = w;
+        offset[i] = w;
+        s.wait[i] = proof_wait_at(w, set.pv[i], t);
+        s.ran[i] = nondet_uint16();
+        due[i] = i < set.n ? (uint32_t)proof_due_at(w, set.pv[i], t) : 0u;
+        due_count += due[i];
     }
-
-    __CPROVER_assert(due_count >= set.load_lo, "balance: at least floor(U) processes due in every cycle");
-    __CPROVER_assert(due_count <= set.load_hi, "balance: at most ceil(U) processes due in every cycle");
+    /* What `balance` shows for the offsets of bsched_init, with perfect = ceil(U). */
+    __CPROVER_assume(due_count <= perfect);
 
     rc = bsched_step(&s);
 
@@ -101,6 +89,6 @@ void harness(void)
         }
     }
     __CPROVER_assert(s.cycle == next, "step: cycle advances to t + 1 mod 2^maxpv");
-    __CPROVER_assert(s.count == set.n && s.maxpv == set.maxpv && s.perfect == set.load_hi,
+    __CPROVER_assert(s.count == set.n && s.maxpv == set.maxpv && s.perfect == perfect,
                      "step: count, maxpv, perfect unchanged");
 }
