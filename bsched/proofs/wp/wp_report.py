@@ -80,7 +80,27 @@ def logic_inventory(spec_files):
             "lemmas": lemmas, "axioms": sorted(set(axioms)), "axiomatic_blocks": sorted(set(axiomatics))}
 
 
+def merge(out, inputs):
+    """Merges the -wp-report-json files of split WP runs into one: counts add up."""
+    merged = {"wp:global": {}, "wp:functions": {}}
+    for path in inputs:
+        with open(path, encoding="utf-8") as f:
+            part = json.load(f)
+        for prover, counts in part.get("wp:global", {}).items():
+            acc = merged["wp:global"].setdefault(prover, {})
+            for key, value in counts.items():
+                acc[key] = max(acc.get(key, 0), value) if key == "rank" else acc.get(key, 0) + value
+        for func, goals in part.get("wp:functions", {}).items():
+            if func in merged["wp:functions"]:
+                sys.exit("wp_report: function %s analysed by two WP runs" % func)
+            merged["wp:functions"][func] = goals
+    with open(out, "w", encoding="utf-8") as f:
+        json.dump(merged, f, indent=1)
+
+
 def main():
+    if len(sys.argv) > 2 and sys.argv[1] == "--merge":
+        return merge(sys.argv[2], sys.argv[3:])
     ap = argparse.ArgumentParser()
     ap.add_argument("log")
     ap.add_argument("wp_json")
