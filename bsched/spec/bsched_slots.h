@@ -15,7 +15,7 @@
  * Contents (prefix slots_): the predicate slots_slot_ok (the fact about one
  * slot); lemma_slots_disjoint (slot ranges of classes are disjoint);
  * slots_area (a ghost function computing B_k = class_area, so that the
- * modular step below is stated on concrete values); lemma_slots_div_unique,
+ * modular step below is stated on concrete values, with lemma_div_unique);
  * lemma_slots_mod_sum ((a mod p + j) mod p == (a + j) mod p);
  * lemma_slots_due (member j of class q is due iff it sits at residue
  * rev_q(t mod 2^q)); lemma_slots_init_wait (init_wait unfolded);
@@ -99,21 +99,6 @@
 */
 
 /*@ ghost
-  /@ requires d > 0 && 0 <= r < d && x == d * q + r;
-     assigns \nothing;
-     ensures div_is: x / d == q;
-     ensures mod_is: x % d == r;
-  @/
-  void lemma_slots_div_unique(uint64_t x, uint64_t d, uint64_t q, uint64_t r)
-  {
-    /@ assert identity: x == d * (x / d) + x % d && 0 <= x % d < d && x / d >= 0; @/
-    /@ assert difference: d * (q - x / d) == x % d - r; @/
-    /@ assert small: -d < d * (q - x / d) < d; @/
-    /@ assert zero: q - x / d == 0; @/
-  }
-*/
-
-/*@ ghost
   /@ requires 0 < p <= 2147483648 && a <= 281474976710656 && j <= 65536;
      assigns \nothing;
      ensures mod_sum: (a % p + j) % p == (a + j) % p;
@@ -124,7 +109,7 @@
     /@ assert split_x: a % p + j == p * ((a % p + j) / p) + (a % p + j) % p &&
            0 <= (a % p + j) % p < p && 0 <= (a % p + j) / p <= a % p + j; @/
     /@ assert regroup: a + j == p * (a / p + (a % p + j) / p) + (a % p + j) % p; @/
-    lemma_slots_div_unique(a + j, p, a / p + (a % p + j) / p, (a % p + j) % p);
+    lemma_div_unique(a + j, p, a / p + (a % p + j) / p, (a % p + j) % p);
   }
 */
 

@@ -77,7 +77,7 @@ check-wp:
 # iff rev_k(t mod 2^k) is its position). WP_FCT keeps this run to those functions.
 wp_empty :=
 wp_space := $(wp_empty) $(wp_empty)
-WP_MUTANT_FCT := $(subst $(wp_space),,lemma_slots_disjoint,lemma_slots_div_unique,lemma_slots_mod_sum, \
+WP_MUTANT_FCT := $(subst $(wp_space),,lemma_slots_disjoint,lemma_slots_mod_sum, \
     lemma_slots_due,lemma_slots_init_wait,lemma_slots_slot,lemma_slots_all,lemma_slots_step, \
     lemma_slots_class,lemma_slots_by_class,reverse_bits)
 WP_MUTANT_GOALS := typed_lemma_slots_init_wait_ensures_init_wait_def
