@@ -35,24 +35,6 @@
 */
 
 /*@ ghost
-  /@ assigns \nothing;
-     ensures pow2_positive: \forall integer b; b <= 62 ==> pow2(b) >= 1;
-  @/
-  void lemma_pow2_positive(void)
-  {
-    int x = 0;
-    /@ loop invariant 0 <= x <= 62;
-       loop invariant \forall integer b; b <= x ==> pow2(b) >= 1;
-       loop assigns x;
-       loop variant 62 - x;
-    @/
-    while (x < 62) {
-      x = x + 1;
-    }
-  }
-*/
-
-/*@ ghost
   /@ requires 0 <= a <= b <= 62;
      assigns \nothing;
      ensures pow2_split: pow2(b) == pow2(a) * pow2(b - a);
@@ -152,29 +134,6 @@
     @/
     while (k < BSCHED_MAX_PV + 1) {
       k = k + 1;
-    }
-  }
-*/
-
-/*@ ghost
-  /@ requires 0 <= m <= BSCHED_MAX_PV;
-     assigns \nothing;
-     ensures pow2_divides: \forall integer a; 0 <= a <= m ==>
-         pow2(m) == pow2(a) * pow2(m - a) && pow2(m - a) >= 1;
-  @/
-  void lemma_pow2_divides(int m)
-  {
-    int a = 0;
-    lemma_pow2(BSCHED_MAX_PV);
-    /@ loop invariant 0 <= a <= m + 1;
-       loop invariant \forall integer b; 0 <= b < a ==>
-           pow2(m) == pow2(b) * pow2(m - b) && pow2(m - b) >= 1;
-       loop assigns a;
-       loop variant m + 1 - a;
-    @/
-    while (a <= m) {
-      lemma_pow2_split(a, m);
-      a = a + 1;
     }
   }
 */

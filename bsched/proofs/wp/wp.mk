@@ -8,15 +8,15 @@ WP_DIR      := $(BUILD)/wp
 WP_SPEC     := $(addprefix bsched/spec/,bsched_logic.h bsched_lemmas.h bsched_order.h \
                bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h)
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
-# Order: the prover that wins most goals first (measured 2026-11-21: of 735 goals, Qed
-# closes 484, CVC4 177, Z3 with bounded instantiation 71, CVC5 2; plain Z3 won
-# none and is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
+# WP starts the provers side by side on each goal and keeps the first proof (measured
+# 2026-11-21, 1771 goals: Qed 1062, CVC4 371, CVC5 195, Z3 with bounded instantiation
+# 150; plain Z3 is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
 WP_PROVERS  ?= cvc4,z3-qi,cvc5
+# Timeouts are wall-clock, so they keep a wide margin over the slowest goal measured
+# (5.2 s, bsched_step ok_periodic): a loaded machine cannot flip the verdict. A prover
+# that gives up does so at once, so the margin costs nothing on proven goals.
 WP_TIMEOUT  ?= 30
-# Timeouts are wall-clock, so they keep a 3x margin over the slowest goal measured on an
-# idle machine: 30 s a goal (plan_classes invariant 7 takes 9.2 s; 10 s failed once under
-# load), 90 s in place_processes (class_in_order and cursor_is_rank take 26-28 s).
-# A prover that gives up does so at once, so the margin costs nothing on proven goals.
+# Prover jobs per Frama-C process: prover start-up, not CPU, bounds a run.
 WP_PAR      ?= 3
 # The full run has more goals than this; fewer means something was not analysed.
 WP_MIN_GOALS ?= 1700
@@ -30,9 +30,8 @@ WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
 	-wp-verbose 1 -wp-cache none
 
-# The full run is split in two Frama-C processes, one per core: WP generates
-# its goals in one thread, so one process would leave a core idle most of the
-# time. Part A takes the library's code behind bsched_init and bsched_step; part B
+# The full run is split in two Frama-C processes: WP generates its goals in one
+# thread, so one process would leave a core idle much of the time. Part A takes the library's code behind bsched_init and bsched_step; part B
 # everything else (bsched_due and the lemma functions), so a new function always
 # lands in B and none is left out.
 WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,run_due
