@@ -71,11 +71,11 @@ def logic_inventory(spec_files):
     for path in spec_files:
         text = open(path, encoding="utf-8").read()
         defs += re.findall(r"\blogic\s+\w+\s+(\w+)\s*(?:\{[^}]*\})?\s*\(", text)
-        preds += re.findall(r"\bpredicate\s+(\w+)", text)
+        preds += re.findall(r"\bpredicate\s+(\w+)\s*(?:\{[^}]*\})?\s*\(", text)
         lemmas += re.findall(r"\blemma\s+(\w+)\s*:", text)
         axioms += re.findall(r"\baxiom\s+(\w+)\s*:", text)
         axiomatics += re.findall(r"\baxiomatic\s+(\w+)", text)
-        lemmas += ["lemma function " + n for n in re.findall(r"void\s+(lemma_\w+)\s*\(", text)]
+        lemmas += ["lemma function " + n for n in re.findall(r"\bvoid\s+(\w+)\s*\(", text)]
     return {"logic_definitions": sorted(set(defs)), "predicates": sorted(set(preds)),
             "lemmas": lemmas, "axioms": sorted(set(axioms)), "axiomatic_blocks": sorted(set(axiomatics))}
 
