@@ -24,7 +24,9 @@ CHECKS  :=
 
 include bsched/bsched.mk
 -include $(sort $(wildcard bsched/proofs/*/*.mk))
--include $(sort $(wildcard kernel/*.mk drivers/*.mk net/*.mk pdl/*.mk emu/*.mk firmware/*.mk))
+-include $(sort $(wildcard kernel/*.mk drivers/*.mk net/*.mk pdl/*.mk emu/*.mk tools/*.mk))
+# Firmware images last: they use the kernel's and the libraries' source lists.
+include apps/apps.mk
 
 .PHONY: all check setup run clean
 all: $(ALL)
@@ -35,13 +37,6 @@ setup:
 check:
 	@$(SETUP)
 	@ci/run-checks $(CHECKS)
-
-# Replaced by the firmware fragment once the emulated board exists.
-ifndef RUN_DEFINED
-run:
-	@echo "make run: the reference firmware and the RoboCube emulator are not built yet."
-	@echo "It will build build/firmware/robocube.elf and boot it with qemu-system-m68k -M robocube."
-endif
 
 clean:
 	rm -rf $(BUILD)

@@ -50,6 +50,11 @@ void console_init(void)
     kprintf_set_output(console_putc);
 }
 
+uint8_t console_acr(void)
+{
+    return CONSOLE_ACR;
+}
+
 static void console_send(char c)
 {
     while ((DUART_REG(DUART_SRB) & DUART_SR_TXRDY) == 0) {

@@ -7,6 +7,7 @@
 #define DRIVERS_DUART_CONSOLE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 /*
  * 38400 (default) or 9600 come from the DUART baud-rate generator; 57600,
@@ -23,6 +24,10 @@
 /* Programs channel B and the DUART counter/timer (baud source), masks all
  * DUART interrupts and makes the console kprintf's output. */
 void console_init(void);
+
+/* The ACR value console_init wrote (baud-rate set, counter/timer mode): a
+ * driver that changes ACR's input-change bits must keep these. */
+uint8_t console_acr(void);
 
 /* Sends one character; '\n' goes out as "\r\n". */
 void console_putc(char c);

@@ -11,11 +11,16 @@
  * as CR LF, as with the firmware's polled console. Fault reports use
  * k_console_write_sync: it drains the ring and sends by polling, with
  * interrupts masked, so they get out even when the system is wedged.
+ *
+ * The DUART's other users (radio, binary inputs, motor direction bits)
+ * share its interrupt, its write-only IMR and ACR, and its output port
+ * through drivers/duart.h, implemented here beside the console.
  */
 #include "k_internal.h"
 #include "k_board.h"
 #include "cpu.h"
 #include "drivers/mc68681.h"
+#include "drivers/duart.h"
 #include "drivers/duart_console.h"
 #include "drivers/pit.h"
 
@@ -28,6 +33,15 @@ static uint8_t k_console_buf[K_BOARD_CONSOLE_RING];
 static struct k_ring k_console_ring;
 static struct k_sem k_console_space;
 static uint8_t k_duart_imr;      /* IMR is write-only: its shadow */
+static uint8_t k_duart_opr;      /* so is OPR */
+static uint8_t k_duart_acr;      /* and ACR */
+
+struct k_duart_handler {
+    uint8_t mask;
+    duart_irq_handler fn;
+    void *arg;
+};
+static struct k_duart_handler k_duart_handlers[DUART_MAX_HANDLERS];
 static int k_console_lf_held;    /* CR sent, LF still to send */
 static uint32_t k_console_drops;
 
@@ -61,13 +75,86 @@ static int k_console_feed(void)
 
 static void k_duart_isr(void *arg)
 {
+    uint8_t pending = (uint8_t)(DUART_REG(DUART_ISR) & k_duart_imr);
+    unsigned i;
     (void)arg;
-    if ((DUART_REG(DUART_ISR) & DUART_ISR_TXRDYB & k_duart_imr) != 0u) {
+    if ((pending & DUART_ISR_TXRDYB) != 0u) {
         if (k_console_feed() && !k_console_lf_held)
             k_duart_set_imr((uint8_t)(k_duart_imr & ~DUART_IMR_TXRDYB));
         if (k_waitq_first(&k_console_space.wq) != NULL)
             (void)k_sem_post(&k_console_space);
     }
+    for (i = 0; i < DUART_MAX_HANDLERS; i++) {
+        const struct k_duart_handler *h = &k_duart_handlers[i];
+        if (h->fn != NULL && (pending & h->mask) != 0u)
+            h->fn((uint8_t)(pending & h->mask), h->arg);
+    }
+}
+
+int duart_irq_attach(uint8_t mask, duart_irq_handler fn, void *arg)
+{
+    uint8_t taken = DUART_IMR_TXRDYB;
+    unsigned i, free_slot = DUART_MAX_HANDLERS;
+    uint32_t irq;
+    int rc = -1;
+    if (mask == 0u || fn == NULL)
+        return -1;
+    irq = k_arch_irq_save();
+    for (i = 0; i < DUART_MAX_HANDLERS; i++) {
+        if (k_duart_handlers[i].fn != NULL)
+            taken = (uint8_t)(taken | k_duart_handlers[i].mask);
+        else if (free_slot == DUART_MAX_HANDLERS)
+            free_slot = i;
+    }
+    if ((mask & taken) == 0u && free_slot < DUART_MAX_HANDLERS) {
+        k_duart_handlers[free_slot].mask = mask;
+        k_duart_handlers[free_slot].arg = arg;
+        k_duart_handlers[free_slot].fn = fn;
+        rc = 0;
+    }
+    k_arch_irq_restore(irq);
+    return rc;
+}
+
+void duart_imr_update(uint8_t set, uint8_t clear)
+{
+    uint32_t irq = k_arch_irq_save();
+    k_duart_set_imr((uint8_t)((k_duart_imr | set) & (uint8_t)~clear));
+    k_arch_irq_restore(irq);
+}
+
+uint8_t duart_imr(void)
+{
+    return k_duart_imr;
+}
+
+void duart_op_assert(uint8_t bits)
+{
+    uint32_t irq = k_arch_irq_save();
+    k_duart_opr = (uint8_t)(k_duart_opr | bits);
+    DUART_REG(DUART_OPR_SET) = bits;
+    k_arch_irq_restore(irq);
+}
+
+void duart_op_negate(uint8_t bits)
+{
+    uint32_t irq = k_arch_irq_save();
+    k_duart_opr = (uint8_t)(k_duart_opr & (uint8_t)~bits);
+    DUART_REG(DUART_OPR_RESET) = bits;
+    k_arch_irq_restore(irq);
+}
+
+uint8_t duart_op(void)
+{
+    return k_duart_opr;
+}
+
+void duart_acr_ipchange(uint8_t ip_mask)
+{
+    uint32_t irq = k_arch_irq_save();
+    k_duart_acr = (uint8_t)((k_duart_acr & 0xF0u) | (ip_mask & 0x0Fu));
+    DUART_REG(DUART_ACR) = k_duart_acr;
+    k_arch_irq_restore(irq);
 }
 
 size_t k_console_write(const char *s, size_t len)
@@ -127,6 +214,13 @@ int k_board_init(void)
     k_console_lf_held = 0;
     k_console_drops = 0;
     k_duart_imr = 0;
+    k_duart_opr = 0;       /* OPR resets to 0: every OPn negated (motors brake) */
+    k_duart_acr = console_acr();
+    {
+        unsigned i;
+        for (i = 0; i < DUART_MAX_HANDLERS; i++)
+            k_duart_handlers[i].fn = NULL;
+    }
     DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
     if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK)
         return -1;

@@ -3,7 +3,8 @@
 # ci/setup qemu from bookworm's QEMU 7.2 source plus emu/hw and emu/qemu-patches.
 #   make emu              build (or incrementally rebuild) the QEMU binary
 #   make check-emu-core   qtest device tests of the board core (emu/tests/test_core_*.py)
-QEMU_M68K := $(BSCHED_TOOLS)/qemu/bin/qemu-system-m68k
+# This checkout's link to the binary built from its own emu/ (ci/setup.d/qemu.sh).
+QEMU_M68K := $(BUILD)/emu/qemu-system-m68k
 export BSCHED_QEMU := $(QEMU_M68K)
 
 CHECKS += emu-core

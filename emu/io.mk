@@ -5,5 +5,5 @@ CHECKS += emu-io
 .PHONY: check-emu-io
 check-emu-io:
 	@$(SETUP) base qemu
-	@BSCHED_QEMU=$(BSCHED_TOOLS)/qemu/bin/qemu-system-m68k \
+	@BSCHED_QEMU=$(QEMU_M68K) \
 	  $(ROOT)/ci/pytest-suite emu-io $(ROOT)/emu/tests/test_io_*.py

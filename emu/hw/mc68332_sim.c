@@ -79,6 +79,7 @@ struct MC68332SimState {
     uint8_t rsr;
     uint8_t next_rsr;       /* cause recorded for the next reset */
     uint8_t porte, ddre, pepar;
+    uint64_t led_changes;   /* LED on/off transitions since reset (host clock-free check) */
     uint8_t portf, ddrf, pfpar;
     uint8_t sypcr;
     bool sypcr_written;
@@ -343,6 +344,24 @@ static uint64_t sim_read(void *opaque, hwaddr addr, unsigned size)
     }
 }
 
+/* PE3 as output port pin driving the LED (high = on). */
+static bool sim_led_on(MC68332SimState *s)
+{
+    return (s->ddre & 0x08) && !(s->pepar & 0x08) && (s->porte & 0x08);
+}
+
+/* A write to one of port E's registers; counts LED transitions so the host
+ * can check blink rates against virtual time, not against its own clock. */
+static void sim_port_e_write(MC68332SimState *s, uint8_t *reg, uint8_t v)
+{
+    bool was_on = sim_led_on(s);
+
+    *reg = v;
+    if (sim_led_on(s) != was_on) {
+        s->led_changes++;
+    }
+}
+
 static void sim_write(void *opaque, hwaddr addr, uint64_t value, unsigned size)
 {
     MC68332SimState *s = opaque;
@@ -374,9 +393,9 @@ static void sim_write(void *opaque, hwaddr addr, uint64_t value, unsigned size)
     case SIM_SYNCR + 1:
         set_lo(&s->syncr, v & lo(SYNCR_WRITABLE));
         break;
-    case SIM_PORTE0: case SIM_PORTE1: s->porte = v; break;
-    case SIM_DDRE: s->ddre = v; break;
-    case SIM_PEPAR: s->pepar = v; break;
+    case SIM_PORTE0: case SIM_PORTE1: sim_port_e_write(s, &s->porte, v); break;
+    case SIM_DDRE: sim_port_e_write(s, &s->ddre, v); break;
+    case SIM_PEPAR: sim_port_e_write(s, &s->pepar, v); break;
     case SIM_PORTF0: case SIM_PORTF1: s->portf = v; break;
     case SIM_DDRF: s->ddrf = v; break;
     case SIM_PFPAR: s->pfpar = v; break;
@@ -509,6 +528,7 @@ static void sim_reset(DeviceState *dev)
     s->simcr = 0x00CF;
     s->syncr = 0x3F00;      /* W=0 X=0 Y=63: 8.388608 MHz from 32.768 kHz */
     s->porte = s->ddre = 0;
+    s->led_changes = 0;
     s->pepar = 0xFF;
     s->portf = s->ddrf = 0;
     s->pfpar = 0xFF;
@@ -546,6 +566,10 @@ static void sim_get_u64(Object *obj, Visitor *v, const char *name,
         value = sim_clock_hz(s);
     } else if (!strcmp(name, "pit-count")) {
         value = s->pit_count;
+    } else if (!strcmp(name, "led-changes")) {
+        value = s->led_changes;
+    } else if (!strcmp(name, "virtual-time-ns")) {
+        value = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
     } else if (!strcmp(name, "pit-period-ns")) {
         value = muldiv64(pit_period_extal(s), NANOSECONDS_PER_SECOND, RC_EXTAL_HZ);
     } else if (!strcmp(name, "flash-base")) {
@@ -560,10 +584,7 @@ static void sim_get_u64(Object *obj, Visitor *v, const char *name,
 
 static bool sim_get_led(Object *obj, Error **errp)
 {
-    MC68332SimState *s = MC68332_SIM(obj);
-
-    /* PE3 as output port pin driving the LED (high = on). */
-    return (s->ddre & 0x08) && !(s->pepar & 0x08) && (s->porte & 0x08);
+    return sim_led_on(MC68332_SIM(obj));
 }
 
 static void sim_init(Object *obj)
@@ -581,6 +602,8 @@ static void sim_init(Object *obj)
     object_property_add_bool(obj, "led", sim_get_led, NULL);
     object_property_add(obj, "system-clock-hz", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "pit-count", "uint64", sim_get_u64, NULL, NULL, NULL);
+    object_property_add(obj, "led-changes", "uint64", sim_get_u64, NULL, NULL, NULL);
+    object_property_add(obj, "virtual-time-ns", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "pit-period-ns", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "flash-base", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "sram-base", "uint64", sim_get_u64, NULL, NULL, NULL);

@@ -14,7 +14,7 @@ Starts qemu-system-m68k -M robocube with
         m.clock_step(1_000_000)
         m.qom_get("/machine/duart", "opr")
 
-The QEMU binary: $BSCHED_QEMU, else ~/.cache/bsched/qemu/bin/qemu-system-m68k.
+The QEMU binary: $BSCHED_QEMU, else this checkout's build/emu/qemu-system-m68k.
 """
 
 import contextlib
@@ -33,8 +33,8 @@ SYPCR = 0xFFFA21
 
 def qemu_binary():
     path = os.environ.get("BSCHED_QEMU") or os.path.join(
-        os.environ.get("BSCHED_TOOLS", os.path.expanduser("~/.cache/bsched")),
-        "qemu", "bin", "qemu-system-m68k")
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "emu",
+        "qemu-system-m68k")
     if not os.access(path, os.X_OK):
         raise FileNotFoundError(
             f"{path}: qemu-system-m68k with the robocube machine is not built "

@@ -3,7 +3,8 @@ checks what they print on the console (DUART channel B = first -serial).
 
 Environment (set by `make check-firmware-boot`):
   BSCHED_QEMU   the qemu-system-m68k with the robocube machine
-  FW_DIR        build/firmware (robocube.elf, tests/fault-*.elf)
+  FW_DIR        build/firmware (tests/fault-*.elf)
+  FW_ELF        the Table 1 image (build/firmware/table1/table1.elf)
   CROSS_PREFIX  m68k-linux-gnu- (objdump, nm, readelf)
   FW_ICOUNT     the -icount setting `make run` uses
 """
@@ -21,8 +22,8 @@ import pytest
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
-ICOUNT = os.environ.get("FW_ICOUNT", "shift=8,sleep=on")   # as `make run` (kernel/firmware.mk)
-FIRMWARE = FW_DIR / "robocube.elf"
+ICOUNT = os.environ.get("FW_ICOUNT", "shift=8,sleep=off")   # as `make run` (kernel/firmware.mk)
+FIRMWARE = Path(os.environ.get("FW_ELF", FW_DIR / "table1" / "table1.elf"))
 FAULT_IMAGES = {kind: FW_DIR / "tests" / f"fault-{kind}.elf"
                 for kind in ("unmapped", "flashwrite", "illegal", "zerodivide")}
 
@@ -37,8 +38,8 @@ TABLE2 = [
     "p1.1 p1.3 p3.1", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
     "p1.1 p1.3 p4.2", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
 ]
-MAJOR_CYCLES = 4          # TABLE1_MAJOR_CYCLES in kernel/apps/table1.c
-TICK_HZ = 128             # FW_TICK_HZ in kernel/firmware.mk (the image's K_TICK_HZ)
+MAJOR_CYCLES = 4          # TABLE1_MAJOR_CYCLES in apps/table1/table1.c
+TICK_HZ = 128             # table1_TICK_HZ in apps/table1/app.mk (the image's K_TICK_HZ)
 B_SCHED_PRIORITY = 27     # K_PRIO_APP_MAX in kernel/include/k_config.h
 BOOT_TIME_LIMIT = 20.0    # seconds of wall time for the whole Table 1 run
 FAULT_TIME_LIMIT = 10.0
@@ -191,16 +192,28 @@ def test_table1_prints_table2_and_periods(board_factory):
 
 def test_led_blinks_after_table1(board_factory, tmp_path):
     """After the run a kernel thread toggles the port E LED every 64 ticks
-    (0.5 s; the CPU idles in STOP in between): sample the board's LED over QMP."""
+    (0.5 s; the CPU idles in STOP in between). Measured in the board's own
+    virtual time, which does not follow the host's clock (-icount sleep=off):
+    LED transitions counted by the board model against its virtual clock."""
     board = board_factory(FIRMWARE, qmp_path=tmp_path / "qmp.sock")
     board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
-    samples = []
-    end = time.monotonic() + 2.5
-    while time.monotonic() < end:
-        samples.append(bool(board.qmp_command("qom-get", path="/machine/sim", property="led")))
-        time.sleep(0.05)
-    changes = sum(1 for a, b in zip(samples, samples[1:]) if a != b)
-    assert 3 <= changes <= 7, f"LED changed {changes} times in 2.5 s: {samples}"
+
+    def sample():
+        return (board.qmp_command("qom-get", path="/machine/sim", property="led-changes"),
+                board.qmp_command("qom-get", path="/machine/sim", property="virtual-time-ns"))
+    changes0, t0 = sample()
+    deadline = time.monotonic() + 20
+    while True:
+        changes, t = sample()
+        if t - t0 >= 3_000_000_000 or time.monotonic() > deadline:
+            break
+        time.sleep(0.02)
+    seconds = (t - t0) / 1e9
+    assert seconds >= 3, f"virtual time advanced only {seconds:.3f} s in 20 s of wall time"
+    # One transition every 0.5 s of virtual time, +-1 for where the window falls.
+    expected = seconds / 0.5
+    assert abs((changes - changes0) - expected) <= 1.5, \
+        f"LED changed {changes - changes0} times in {seconds:.3f} s of virtual time"
     assert board.proc.poll() is None
     assert "EXCEPTION" not in board.text()
 

@@ -1,0 +1,53 @@
+/*
+ * Shared services of the MC68681 DUART. One chip serves several drivers: the
+ * console (channel B, in k_board_robocube.c), the radio (channel A, net/), the
+ * binary inputs (IP1-IP5) and carrier detect (IP0), and the output port
+ * (motor direction OP2-OP7, radio enables OP0/OP1). Its interrupt mask (IMR)
+ * and the auxiliary control register (ACR) are write-only and its single
+ * interrupt is shared, so those live here, once, and drivers attach to them.
+ */
+#ifndef DRIVERS_DUART_H
+#define DRIVERS_DUART_H
+
+#include <stdint.h>
+
+/* ISR / IMR bits. */
+#define DUART_INT_TXRDYA   0x01u
+#define DUART_INT_RXRDYA   0x02u
+#define DUART_INT_BREAKA   0x04u
+#define DUART_INT_COUNTER  0x08u
+#define DUART_INT_TXRDYB   0x10u
+#define DUART_INT_RXRDYB   0x20u
+#define DUART_INT_BREAKB   0x40u
+#define DUART_INT_IPCHANGE 0x80u
+
+/* Handlers the DUART interrupt can call, besides the console's. */
+#define DUART_MAX_HANDLERS 4u
+
+/*
+ * Called from the DUART interrupt (level 5, interrupts at that level masked)
+ * with the ISR bits that are both pending and enabled and that the handler
+ * asked for. It must clear its own sources (read the receive buffer, feed or
+ * mask the transmitter, read IPCR) before it returns.
+ */
+typedef void (*duart_irq_handler)(uint8_t pending, void *arg);
+
+/* Attaches fn for the ISR bits in mask. 0, or -1 when mask is 0, overlaps the
+ * console's or another handler's bits, or all DUART_MAX_HANDLERS are taken. */
+int duart_irq_attach(uint8_t mask, duart_irq_handler fn, void *arg);
+
+/* Sets, then clears, bits of the interrupt mask; safe from threads and handlers. */
+void duart_imr_update(uint8_t set, uint8_t clear);
+uint8_t duart_imr(void);
+
+/* Output port: bit n set = OPn asserted (pin low), as OPR-set/OPR-reset do.
+ * Each call is one register write, so drivers owning different bits never race. */
+void duart_op_assert(uint8_t bits);
+void duart_op_negate(uint8_t bits);
+uint8_t duart_op(void);   /* the shadow of OPR (the register is write-only) */
+
+/* ACR bits 3-0 enable the input-change interrupt for IP3-IP0 (IPCR). ACR's
+ * upper bits belong to the console's baud setup and are kept. */
+void duart_acr_ipchange(uint8_t ip_mask);
+
+#endif /* DRIVERS_DUART_H */
