@@ -12,7 +12,8 @@ BUILD := $(ROOT)/build
 export BSCHED_TOOLS ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/bsched
 SETUP := $(ROOT)/ci/setup
 RESULTS := $(BUILD)/results
-PYTHON := $(BSCHED_TOOLS)/venv/bin/python
+# This checkout's pinned Python environment (a link made by ci/setup base).
+PYTHON := $(BUILD)/venv/bin/python
 # Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
 record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
 

@@ -8,7 +8,7 @@
 set -euo pipefail
 tools=$1 srcdir=$2; shift 2
 bin="$tools/cbmc/bin"
-viewer=${CBMC_VIEWER:-$tools/venv/bin/cbmc-viewer}
+viewer=${CBMC_VIEWER:-$srcdir/build/venv/bin/cbmc-viewer}
 [ -x "$viewer" ] || { echo "report.sh: no cbmc-viewer at $viewer: run ci/setup base" >&2; exit 2; }
 status=0
 for dir in "$@"; do
