@@ -18,7 +18,9 @@ The QEMU binary: $BSCHED_QEMU, else this checkout's build/emu/qemu-system-m68k.
 """
 
 import contextlib
+import ctypes
 import os
+import signal
 import shutil
 import socket
 import subprocess
@@ -26,6 +28,13 @@ import tempfile
 import time
 
 from qemu.qmp.legacy import QEMUMonitorProtocol
+
+
+def _die_with_parent():
+    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
+    so a killed or crashed test run never leaves an emulator spinning (under
+    -icount sleep=off an idle guest keeps a host core busy)."""
+    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
 SERIAL_NAMES = ("console", "radio", "sci")
 SYPCR = 0xFFFA21
@@ -154,7 +163,8 @@ class Machine:
             self.stderr_path = os.path.join(self.dir, "stderr.log")
             self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL,
                                          stdout=subprocess.DEVNULL,
-                                         stderr=open(self.stderr_path, "w"))
+                                         stderr=open(self.stderr_path, "w"),
+                                         preexec_fn=_die_with_parent)
             # QEMU connects the chardevs, then qtest, then QMP, in this order.
             self.serial = [SerialPort(name, self._accept(lst, timeout))
                            for name, lst in zip(SERIAL_NAMES, serial_listeners)]

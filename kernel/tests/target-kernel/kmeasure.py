@@ -18,7 +18,9 @@ translation block, no block chaining), then walks the PC sequence:
 Usage: kmeasure.py [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
 $BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
 """
+import ctypes
 import os
+import signal
 import re
 import select
 import statistics
@@ -31,6 +33,13 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[3]
 TRACE = re.compile(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/")
 
+
+
+def _die_with_parent():
+    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
+    so a killed or crashed test run never leaves an emulator spinning (under
+    -icount sleep=off an idle guest keeps a host core busy)."""
+    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
 def symbols(elf, cross="m68k-linux-gnu-"):
     out = subprocess.run([cross + "nm", str(elf)], check=True, capture_output=True,
@@ -47,7 +56,7 @@ def run_until_result(cmd, seconds):
     """Runs QEMU (cmd) until the console shows a KTEST RESULT line or `seconds`
     pass; returns (console bytes, stderr bytes)."""
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE)
+                            stderr=subprocess.PIPE, preexec_fn=_die_with_parent)
     out = b""
     deadline = time.monotonic() + seconds
     try:

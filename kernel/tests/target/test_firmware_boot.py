@@ -9,7 +9,9 @@ Environment (set by `make check-firmware-boot`):
   FW_ICOUNT     the -icount setting `make run` uses
 """
 import json
+import ctypes
 import os
+import signal
 import re
 import select
 import socket
@@ -18,6 +20,13 @@ import time
 from pathlib import Path
 
 import pytest
+
+
+def _die_with_parent():
+    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
+    so a killed or crashed test run never leaves an emulator spinning (under
+    -icount sleep=off an idle guest keeps a host core busy)."""
+    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
@@ -56,7 +65,8 @@ class Board:
         self.proc = subprocess.Popen(
             [QEMU, "-M", "robocube", "-icount", ICOUNT, "-kernel", str(elf), "-display", "none",
              "-monitor", "none", "-serial", "stdio"] + extra,
-            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+            preexec_fn=_die_with_parent)
         self.output = b""
         self.qmp = None
         if qmp_path:
