@@ -48,7 +48,7 @@ check-pdl-unit: $(PDL_HOST_TESTS)
 	done; \
 	for src in $(PDL_REFUSE_SRCS); do \
 	    want=$$(sed -n '1s|^// expect: ||p' $$src); \
-	    out=$$($(HOST_CC) $(PDL_HOST_CFLAGS) -fsyntax-only $$src 2>&1); \
+	    out=$$(LC_ALL=C $(HOST_CC) $(PDL_HOST_CFLAGS) -fsyntax-only $$src 2>&1); \
 	    if [ $$? -ne 0 ] && [ -n "$$want" ] && echo "$$out" | grep -qF -- "$$want"; then \
 	        p=$$((p + 1)); echo "[       OK ] refused at compile time: $$src"; \
 	    else f=$$((f + 1)); rc=1; echo "[  FAILED  ] $$src compiled or without '$$want':"; echo "$$out"; fi; \
