@@ -129,6 +129,15 @@ int pdl_bind_table(const struct pdl_binding *table, size_t count)
     return PDL_OK;
 }
 
+int pdl_bind_uses(enum pdl_port port)
+{
+    unsigned i;
+    for (i = 0; i < pdl_nbindings; i++)
+        if (pdl_bindings[i].port == (uint8_t)port)
+            return 1;
+    return 0;
+}
+
 static int32_t pdl_clip(int32_t v, int32_t lo, int32_t hi)
 {
     return v < lo ? lo : v > hi ? hi : v;

@@ -145,27 +145,6 @@ int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max)
     return PDL_OK;
 }
 
-void pdl_pend(struct pdl_head *h)
-{
-    if (h->id == 0u || h->id > pdl_nquantities || pdl_quantities[h->id - 1u] != h) {
-        (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value");
-        return;
-    }
-    if (pdl_current < 0) {
-        /* the contribution already went into the sum: take it back out, so
-         * that a refused call leaves the quantity as it was */
-        if (h->kind == PDL_KIND_INT)
-            ((struct pdl_quantity *)(void *)h)->sum = 0;
-        else
-            ((struct pdl_fquantity *)(void *)h)->sum = 0.0f;
-        (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
-        return;
-    }
-    h->pending = 1;
-    pdl_pending_list[pdl_npending] = h;
-    pdl_npending++;
-}
-
 static int pdl_add(pdl_process_fn f, int pv, const char *fn)
 {
     if (f == NULL)
@@ -203,6 +182,33 @@ int pdl_core_plan(void)
     return PDL_OK;
 }
 
+/* The cycle's path (add_value's first use, running a process, the commit)
+ * is compiled for speed, the rest of the runtime for size. */
+#pragma GCC push_options
+#pragma GCC optimize("O2")
+
+void pdl_pend(struct pdl_head *h)
+{
+    /* declared quantities have an id (pdl_reset clears them) */
+    if (h->id == 0u) {
+        (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value");
+        return;
+    }
+    if (pdl_current < 0) {
+        /* the contribution already went into the sum: take it back out, so
+         * that a refused call leaves the quantity as it was */
+        if (h->kind == PDL_KIND_INT)
+            ((struct pdl_quantity *)(void *)h)->sum = 0;
+        else
+            ((struct pdl_fquantity *)(void *)h)->sum = 0.0f;
+        (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
+        return;
+    }
+    h->pending = 1;
+    pdl_pending_list[pdl_npending] = h;
+    pdl_npending++;
+}
+
 void pdl_cycle_begin(uint32_t now_us)
 {
     pdl_dt_us = pdl_cycle_count_begun == 0u ? pdl_core_period_us : now_us - pdl_cycle_start_us;
@@ -211,7 +217,7 @@ void pdl_cycle_begin(uint32_t now_us)
     pdl_bind_refresh_sensors();
 }
 
-static void pdl_run_one(void *context, uint16_t index)
+void pdl_core_run_process(void *context, uint16_t index)
 {
     (void)context;
     pdl_current = index;
@@ -219,26 +225,35 @@ static void pdl_run_one(void *context, uint16_t index)
     pdl_current = -1;
     pdl_last_run_us[index] = pdl_cycle_start_us;
     pdl_has_run[index] = 1;
+    pdl_stats.process_runs++;
 }
+
+struct bsched *pdl_core_sched(void) { return &pdl_sched; }
 
 int32_t pdl_cycle_run(void)
 {
-    int32_t ran = bsched_run_cycle(&pdl_sched, pdl_run_one, NULL);
-    if (ran > 0)
-        pdl_stats.process_runs += (uint32_t)ran;
-    return ran;
+    return bsched_run_cycle(&pdl_sched, pdl_core_run_process, NULL);
 }
 
-/* Clips the sum of one integer quantity into its value. */
+/* Clips the sum of one integer quantity into its value. The usual case
+ * (the cycle's sum fits 32 bits, and so does cur + sum) takes 32-bit
+ * arithmetic only: 64-bit compares cost the CPU32 twice as much. */
 static void pdl_commit_int(struct pdl_quantity *q)
 {
-    int64_t v = (int64_t)q->cur + q->sum;
+    int64_t sum = q->sum;
+    int32_t low = (int32_t)sum;
+    int32_t v;
     q->sum = 0;
-    if (v > q->max)
-        v = q->max;
-    else if (v < q->min)
-        v = q->min;
-    q->cur = (int32_t)v;
+    if ((int64_t)low == sum && !__builtin_add_overflow(q->cur, low, &v)) {
+        if (v > q->max)
+            v = q->max;
+        else if (v < q->min)
+            v = q->min;
+    } else {
+        int64_t w = (int64_t)q->cur + sum;
+        v = w > q->max ? q->max : w < q->min ? q->min : (int32_t)w;
+    }
+    q->cur = v;
 }
 
 static void pdl_commit_float(struct pdl_fquantity *q)
@@ -256,17 +271,18 @@ static void pdl_commit_float(struct pdl_fquantity *q)
 
 static void pdl_commit(void)
 {
-    uint16_t i, n = pdl_npending;
-    for (i = 0; i < n; i++) {
-        struct pdl_head *h = pdl_pending_list[i];
+    struct pdl_head **p = pdl_pending_list;
+    struct pdl_head **end = p + pdl_npending;
+    pdl_stats.commits += pdl_npending;
+    pdl_npending = 0;
+    for (; p != end; p++) {
+        struct pdl_head *h = *p;
+        h->pending = 0;
         if (h->kind == PDL_KIND_INT)
             pdl_commit_int((struct pdl_quantity *)(void *)h);
         else
             pdl_commit_float((struct pdl_fquantity *)(void *)h);
-        h->pending = 0;
     }
-    pdl_npending = 0;
-    pdl_stats.commits += n;
 }
 
 void pdl_cycle_end(void)
@@ -275,6 +291,8 @@ void pdl_cycle_end(void)
     pdl_bind_write_actuators(0);
     pdl_stats.cycles++;
 }
+
+#pragma GCC pop_options
 
 uint32_t dt_us(void) { return pdl_dt_us; }
 float dt(void) { return (float)pdl_dt_us * 1e-6f; }
@@ -295,8 +313,10 @@ uint32_t pdl_period_us(void) { return pdl_core_period_us; }
 
 void pdl_get_stats(struct pdl_stats *out)
 {
-    if (out != NULL)
+    if (out != NULL) {
         *out = pdl_stats;
+        pdl_platform_stats(out);
+    }
 }
 
 void pdl_core_reset(void)

@@ -22,6 +22,12 @@ int32_t pdl_cycle_run(void);
 /* Commits the cycle's sums, then writes the actuators. */
 void pdl_cycle_end(void);
 
+/* The planned scheduler and the bsched process body that runs PDL process
+ * `index` (for a B-scheduler thread that calls bsched_run_cycle itself). */
+struct bsched;
+struct bsched *pdl_core_sched(void);
+void pdl_core_run_process(void *context, uint16_t index);
+
 /* Plans the process set (bsched_init); PDL_OK or an error (reported). */
 int pdl_core_plan(void);
 /* Marks the set as started (refuses further declarations). */
@@ -54,6 +60,10 @@ void pdl_bind_reset(void);
 void pdl_platform_read_inputs(struct pdl_inputs *in);
 /* Writes one actuator; >= 0 or a negative driver code. */
 int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v);
+/* Adds what the platform counts (overruns, cycle ticks) to *out. */
+void pdl_platform_stats(struct pdl_stats *out);
+/* Non-zero if some quantity is bound to `port`. */
+int pdl_bind_uses(enum pdl_port port);
 /* Prepares the drivers the bindings use (at run_pdl); PDL_OK or an error. */
 int pdl_platform_start_ports(void);
 

@@ -47,6 +47,8 @@ int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v)
 
 int pdl_platform_start_ports(void) { return PDL_OK; }
 
+void pdl_platform_stats(struct pdl_stats *out) { (void)out; }   /* no overruns in simulated time */
+
 int pdl_set_frequency(uint32_t hz)
 {
     if (pdl_core_started())
