@@ -51,11 +51,7 @@ static void *k_bsched_main(void *arg)
         start = k_ticks();
         b->watch = b->next_release + b->period;
         b->in_cycle = 1;
-        if (b->before_cycle != NULL)
-            b->before_cycle(b->context);
         ran = bsched_run_cycle(b->sched, b->run, b->context);
-        if (b->after_cycle != NULL && ran >= 0)
-            b->after_cycle(b->context);
         b->in_cycle = 0;
         end = k_ticks();
         if (ran < 0) {

@@ -42,6 +42,15 @@
 #ifndef PDL_MAX_BINDINGS
 #define PDL_MAX_BINDINGS 32
 #endif
+/* The plan of one major cycle is recorded at run_pdl() when it has at most
+ * PDL_PLAN_CYCLES minor cycles (maxpv <= 8) and PDL_PLAN_RUNS process runs;
+ * larger sets are stepped live through bsched_run_cycle (same schedule). */
+#ifndef PDL_PLAN_CYCLES
+#define PDL_PLAN_CYCLES 256
+#endif
+#ifndef PDL_PLAN_RUNS
+#define PDL_PLAN_RUNS 1024
+#endif
 /* Largest priority value: a process runs every 2^pv cycles (bsched's range). */
 #define PDL_MAX_PV 31
 

@@ -3,6 +3,10 @@
  * the nanokernel (the kernel's B-scheduler thread, kernel/k_bsched.c, with
  * PDL's work before and after each minor cycle), the ports are the drivers.
  *
+ * The kernel thread runs a one-process B-schedule (pv 0: every minor cycle)
+ * whose process is the whole PDL cycle; the PDL processes' own schedule is
+ * pdl_core's (bsched.c's plan of the PDL set).
+ *
  * A cycle: read the sensors from the sampler's latest snapshot (no bus
  * access in the cycle), run the due processes, commit, write the changed
  * actuators. The cycle period is a whole number of kernel ticks (f0 =
@@ -162,15 +166,16 @@ int pdl_platform_start_ports(void)
 }
 
 /* ---- the cycle thread ---- */
-static void pdl_before_cycle(void *context)
-{
-    (void)context;
-    pdl_cycle_begin(pdl_ticks_to_us(k_ticks()));
-}
+static struct bsched pdl_outer;
+static const uint8_t pdl_outer_pv[1] = {0};
 
-static void pdl_after_cycle(void *context)
+/* The one process of the kernel thread's schedule: a whole PDL cycle. */
+static void pdl_board_cycle(void *context, uint16_t index)
 {
     (void)context;
+    (void)index;
+    pdl_cycle_begin(pdl_ticks_to_us(k_ticks()));
+    (void)pdl_cycle_run();
     pdl_cycle_end();
 }
 
@@ -206,11 +211,16 @@ int run_pdl(void)
         return r;
     pdl_core_set_started(1);
     pdl_bind_write_actuators(1);    /* the initial values */
-    pdl_thread.before_cycle = pdl_before_cycle;
-    pdl_thread.after_cycle = pdl_after_cycle;
     pdl_thread.stop_after = 0;
-    r = k_bsched_start(&pdl_thread, pdl_core_sched(), pdl_core_run_process, NULL,
-                       pdl_period_ticks, pdl_stack, sizeof pdl_stack);
+    /* Start at the beginning of a tick: creating the thread fills its stack
+     * (a few thousand instructions), and k_bsched_start releases the first
+     * cycle at the next tick, which must not already be past. */
+    if (!k_in_isr())
+        (void)k_sleep_ticks(1);
+    r = (int)bsched_init(&pdl_outer, pdl_outer_pv, 1);
+    if (r == BSCHED_OK)
+        r = k_bsched_start(&pdl_thread, &pdl_outer, pdl_board_cycle, NULL,
+                           pdl_period_ticks, pdl_stack, sizeof pdl_stack);
     if (r != K_OK) {
         pdl_core_set_started(0);
         return pdl_refuse(PDL_ERR_KERNEL, "run_pdl (k_bsched_start)");

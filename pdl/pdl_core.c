@@ -13,6 +13,12 @@
 #if PDL_MAX_PROCESSES > BSCHED_MAX_PROCS
 #error "PDL_MAX_PROCESSES exceeds BSCHED_MAX_PROCS: raise -DBSCHED_MAX_PROCS"
 #endif
+#if PDL_MAX_PROCESSES > 255
+#error "PDL_MAX_PROCESSES must fit the plan's uint8_t indices"
+#endif
+#if PDL_PLAN_RUNS > 65535
+#error "PDL_PLAN_RUNS must fit a uint16_t"
+#endif
 #if PDL_MAX_QUANTITIES > 65535
 #error "PDL_MAX_QUANTITIES must fit a uint16_t id"
 #endif
@@ -23,14 +29,28 @@ static struct bsched pdl_sched;
 static pdl_process_fn pdl_procs[PDL_MAX_PROCESSES];
 static uint8_t pdl_pv[PDL_MAX_PROCESSES];
 static uint32_t pdl_last_run_us[PDL_MAX_PROCESSES]; /* cycle start of the last run */
-static uint8_t pdl_has_run[PDL_MAX_PROCESSES];
 static uint16_t pdl_nprocs;
 
 static struct pdl_head *pdl_quantities[PDL_MAX_QUANTITIES];
 static uint16_t pdl_nquantities;
-/* Quantities with contributions this cycle, each once. */
-static struct pdl_head *pdl_pending_list[PDL_MAX_QUANTITIES];
-static uint16_t pdl_npending;
+/* Quantities with contributions this cycle, each once, by kind (so the
+ * commit loops need no dispatch). */
+static struct pdl_quantity *pdl_pending_int[PDL_MAX_QUANTITIES];
+static struct pdl_fquantity *pdl_pending_float[PDL_MAX_QUANTITIES];
+static uint32_t pdl_npending_int, pdl_npending_float;
+
+/* The plan of one major cycle, recorded from bsched_step at run_pdl(): for
+ * minor cycle t, the processes pdl_plan_runs[pdl_plan_start[t] ..
+ * pdl_plan_start[t+1]-1] in execution order. bsched's schedule is periodic
+ * over the major cycle (proven, README "Proofs"), so replaying the record
+ * runs exactly what bsched_run_cycle would, in O(processes run) instead of
+ * O(processes). Sets whose major cycle does not fit are stepped live. */
+static uint8_t pdl_plan_runs[PDL_PLAN_RUNS];
+static uint16_t pdl_plan_start[PDL_PLAN_CYCLES + 1];
+static uint32_t pdl_plan_mask;      /* 2^maxpv - 1 */
+static uint32_t pdl_plan_t;         /* next minor cycle to replay */
+static int pdl_plan_cached;
+int pdl_plan_cache_enabled = 1;
 
 static int pdl_started;
 static int pdl_current = -1;        /* process running now, or -1 */
@@ -157,17 +177,51 @@ static int pdl_add(pdl_process_fn f, int pv, const char *fn)
         return pdl_refuse(PDL_ERR_TOO_MANY_PROCESSES, fn);
     pdl_procs[pdl_nprocs] = f;
     pdl_pv[pdl_nprocs] = (uint8_t)pv;
-    pdl_has_run[pdl_nprocs] = 0;
     return pdl_nprocs++;
 }
 
 int add_process(pdl_process_fn f) { return pdl_add(f, 0, "add_process"); }
 int add_process_pv(pdl_process_fn f, int pv) { return pdl_add(f, pv, "add_process_pv"); }
 
+/* Records one major cycle of the planned set (see pdl_plan_runs). Steps
+ * pdl_sched through exactly 2^maxpv minor cycles, after which its state is
+ * the initial one again; that is checked, and anything unexpected falls
+ * back to live stepping from a fresh bsched_init. */
+static void pdl_plan_record(void)
+{
+    uint32_t t, cycles, n = 0;
+    uint16_t i;
+    pdl_plan_cached = 0;
+    pdl_plan_t = 0;
+    if (!pdl_plan_cache_enabled || pdl_sched.maxpv > 30u)
+        return;
+    cycles = 1ul << pdl_sched.maxpv;
+    if (cycles > PDL_PLAN_CYCLES)
+        return;
+    for (t = 0; t < cycles; t++) {
+        int32_t ran = bsched_step(&pdl_sched);
+        pdl_plan_start[t] = (uint16_t)n;
+        if (ran < 0 || n + (uint32_t)ran > PDL_PLAN_RUNS)
+            break;
+        for (i = 0; i < (uint16_t)ran; i++)
+            pdl_plan_runs[n++] = (uint8_t)pdl_sched.ran[i];
+    }
+    pdl_plan_start[cycles] = (uint16_t)n;
+    if (t == cycles && pdl_sched.cycle == 0u) {
+        for (i = 0; i < pdl_sched.count && pdl_sched.wait[i] == pdl_sched.offset[i]; i++)
+            ;
+        if (i == pdl_sched.count) {
+            pdl_plan_mask = cycles - 1u;
+            pdl_plan_cached = 1;
+            return;
+        }
+    }
+    (void)bsched_init(&pdl_sched, pdl_pv, pdl_nprocs);   /* live stepping */
+}
+
 int pdl_core_plan(void)
 {
     int32_t r;
-    uint16_t i;
     if (pdl_started)
         return pdl_refuse(PDL_ERR_RUNNING, "run_pdl");
     if (pdl_nprocs == 0u)
@@ -175,8 +229,7 @@ int pdl_core_plan(void)
     r = bsched_init(&pdl_sched, pdl_pv, pdl_nprocs);
     if (r != BSCHED_OK)     /* cannot happen: count and pv were checked */
         return pdl_refuse(PDL_ERR_PV_RANGE, "run_pdl (bsched_init)");
-    for (i = 0; i < pdl_nprocs; i++)
-        pdl_has_run[i] = 0;
+    pdl_plan_record();
     pdl_cycle_count_begun = 0;
     pdl_dt_us = pdl_core_period_us;
     return PDL_OK;
@@ -205,55 +258,82 @@ void pdl_pend(struct pdl_head *h)
         return;
     }
     h->pending = 1;
-    pdl_pending_list[pdl_npending] = h;
-    pdl_npending++;
+    if (h->kind == PDL_KIND_INT)
+        pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
+    else
+        pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
 }
 
 void pdl_cycle_begin(uint32_t now_us)
 {
-    pdl_dt_us = pdl_cycle_count_begun == 0u ? pdl_core_period_us : now_us - pdl_cycle_start_us;
+    if (pdl_cycle_count_begun == 0u) {
+        uint16_t i;
+        /* as if each process had last run 2^pv nominal periods ago */
+        for (i = 0; i < pdl_nprocs; i++)
+            pdl_last_run_us[i] = now_us - (pdl_core_period_us << pdl_pv[i]);
+        pdl_dt_us = pdl_core_period_us;
+    } else {
+        pdl_dt_us = now_us - pdl_cycle_start_us;
+    }
     pdl_cycle_start_us = now_us;
     pdl_cycle_count_begun++;
     pdl_bind_refresh_sensors();
 }
 
-void pdl_core_run_process(void *context, uint16_t index)
+static void pdl_core_run_process(void *context, uint16_t index)
 {
     (void)context;
     pdl_current = index;
     pdl_procs[index]();
     pdl_current = -1;
     pdl_last_run_us[index] = pdl_cycle_start_us;
-    pdl_has_run[index] = 1;
-    pdl_stats.process_runs++;
 }
-
-struct bsched *pdl_core_sched(void) { return &pdl_sched; }
 
 int32_t pdl_cycle_run(void)
 {
-    return bsched_run_cycle(&pdl_sched, pdl_core_run_process, NULL);
+    uint32_t k, end;
+    int32_t ran;
+    if (!pdl_plan_cached) {
+        ran = bsched_run_cycle(&pdl_sched, pdl_core_run_process, NULL);
+    } else {
+        k = pdl_plan_start[pdl_plan_t];
+        end = pdl_plan_start[pdl_plan_t + 1u];
+        ran = (int32_t)(end - k);
+        pdl_plan_t = (pdl_plan_t + 1u) & pdl_plan_mask;
+        for (; k < end; k++)
+            pdl_core_run_process(NULL, pdl_plan_runs[k]);
+    }
+    if (ran > 0)
+        pdl_stats.process_runs += (uint32_t)ran;
+    return ran;
 }
 
-/* Clips the sum of one integer quantity into its value. The usual case
- * (the cycle's sum fits 32 bits, and so does cur + sum) takes 32-bit
- * arithmetic only: 64-bit compares cost the CPU32 twice as much. */
+/* Clips the sum of one integer quantity into its value. The usual case,
+ * a cycle's sum that fits 32 bits, compares it with the distances to the
+ * bounds (exact as unsigned: cur is within [min, max]), so it needs no
+ * 64-bit arithmetic, which costs the CPU32 two instructions per step. */
 static void pdl_commit_int(struct pdl_quantity *q)
 {
     int64_t sum = q->sum;
     int32_t low = (int32_t)sum;
-    int32_t v;
+    int32_t high = (int32_t)(sum >> 32);
+    int32_t cur = q->cur;
     q->sum = 0;
-    if ((int64_t)low == sum && !__builtin_add_overflow(q->cur, low, &v)) {
-        if (v > q->max)
-            v = q->max;
-        else if (v < q->min)
-            v = q->min;
-    } else {
-        int64_t w = (int64_t)q->cur + sum;
-        v = w > q->max ? q->max : w < q->min ? q->min : (int32_t)w;
+    if (low >= 0 && high == 0) {
+        if ((uint32_t)low > (uint32_t)q->max - (uint32_t)cur)
+            cur = q->max;
+        else
+            cur = (int32_t)((uint32_t)cur + (uint32_t)low);
+    } else if (low < 0 && high == -1) {
+        if (0u - (uint32_t)low > (uint32_t)cur - (uint32_t)q->min)
+            cur = q->min;
+        else
+            cur = (int32_t)((uint32_t)cur + (uint32_t)low);
+    } else {            /* |sum| >= 2^31: rare, 64-bit */
+        int64_t w = (int64_t)cur + sum;
+        cur = w > q->max ? q->max : w < q->min ? q->min : (int32_t)w;
     }
-    q->cur = v;
+    q->cur = cur;
 }
 
 static void pdl_commit_float(struct pdl_fquantity *q)
@@ -271,17 +351,18 @@ static void pdl_commit_float(struct pdl_fquantity *q)
 
 static void pdl_commit(void)
 {
-    struct pdl_head **p = pdl_pending_list;
-    struct pdl_head **end = p + pdl_npending;
-    pdl_stats.commits += pdl_npending;
-    pdl_npending = 0;
+    struct pdl_quantity **p = pdl_pending_int, **end = p + pdl_npending_int;
+    struct pdl_fquantity **f = pdl_pending_float, **fend = f + pdl_npending_float;
+    pdl_stats.commits += pdl_npending_int + pdl_npending_float;
+    pdl_npending_int = 0;
+    pdl_npending_float = 0;
     for (; p != end; p++) {
-        struct pdl_head *h = *p;
-        h->pending = 0;
-        if (h->kind == PDL_KIND_INT)
-            pdl_commit_int((struct pdl_quantity *)(void *)h);
-        else
-            pdl_commit_float((struct pdl_fquantity *)(void *)h);
+        (*p)->head.pending = 0;
+        pdl_commit_int(*p);
+    }
+    for (; f != fend; f++) {
+        (*f)->head.pending = 0;
+        pdl_commit_float(*f);
     }
 }
 
@@ -302,8 +383,6 @@ uint32_t dt_process_us(void)
     int i = pdl_current;
     if (i < 0)
         return 0;
-    if (!pdl_has_run[i])
-        return pdl_core_period_us << pdl_pv[i];
     return pdl_cycle_start_us - pdl_last_run_us[i];
 }
 
@@ -327,7 +406,8 @@ void pdl_core_reset(void)
         pdl_quantities[i]->pending = 0;
     }
     pdl_nquantities = 0;
-    pdl_npending = 0;
+    pdl_npending_int = 0;
+    pdl_npending_float = 0;
     pdl_nprocs = 0;
     pdl_started = 0;
     pdl_current = -1;

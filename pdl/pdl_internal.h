@@ -22,12 +22,8 @@ int32_t pdl_cycle_run(void);
 /* Commits the cycle's sums, then writes the actuators. */
 void pdl_cycle_end(void);
 
-/* The planned scheduler and the bsched process body that runs PDL process
- * `index` (for a B-scheduler thread that calls bsched_run_cycle itself). */
-struct bsched;
-struct bsched *pdl_core_sched(void);
-void pdl_core_run_process(void *context, uint16_t index);
-
+/* Non-zero (default): record and replay the major cycle (tests compare both ways). */
+extern int pdl_plan_cache_enabled;
 /* Plans the process set (bsched_init); PDL_OK or an error (reported). */
 int pdl_core_plan(void);
 /* Marks the set as started (refuses further declarations). */

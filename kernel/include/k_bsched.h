@@ -33,11 +33,6 @@ struct k_bsched {
     uint32_t overrun_events;   /* cycles that overran (reports printed) */
     uint32_t max_cycle_ticks;  /* longest minor cycle, in ticks */
     uint32_t stop_after;       /* stop after this many cycles (0 = never) */
-    /* Optional (NULL = none), set before k_bsched_start: called in the thread
-     * just before and just after every minor cycle, with `context`, inside
-     * the cycle's time (PDL reads its sensors before and commits after). */
-    void (*before_cycle)(void *context);
-    void (*after_cycle)(void *context);
     volatile int stop;         /* set to end the thread after this cycle */
     /* reporting */
     uint32_t last_overrun_cycle;  /* cycles_run index of the last overrun */

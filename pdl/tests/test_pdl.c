@@ -115,6 +115,43 @@ static void test_clip_applies_to_the_sum(void **state)
     assert_int_equal(value(q_a), 9);
 }
 
+/* ---- clipping at the int32 extremes (32-bit fast path and 64-bit path) ---- */
+static int32_t wide_step;
+static void add_wide(void) { add_value(q_a, wide_step); }
+
+static void test_clipping_at_int32_extremes(void **state)
+{
+    static const struct { int32_t start, step, want; } cases[] = {
+        {INT32_MAX - 1, 5, INT32_MAX},          /* distance 1 to max */
+        {INT32_MAX - 10, 10, INT32_MAX},        /* lands exactly on max */
+        {INT32_MIN + 1, -5, INT32_MIN},
+        {INT32_MIN, INT32_MAX, -1},             /* distance 2^32 - 1: no clip */
+        {INT32_MAX, INT32_MIN, -1},
+        {0, INT32_MIN, INT32_MIN},              /* -2^31 fits 32 bits */
+        {-1, INT32_MAX, INT32_MAX - 1},
+    };
+    unsigned i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        pdl_reset();
+        assert_int_equal(add_quantity(&q_a, INT32_MIN, INT32_MAX, cases[i].start), PDL_OK);
+        wide_step = cases[i].step;
+        add_process(add_wide);
+        run_pdl();
+        pdl_run_cycles(1);
+        assert_int_equal(value(q_a), cases[i].want);
+    }
+    /* two contributions whose sum leaves 32 bits: the 64-bit path */
+    pdl_reset();
+    add_quantity(&q_a, -1000, 1000, 0);
+    wide_step = INT32_MIN;
+    add_process(add_wide);
+    add_process(add_wide);
+    run_pdl();
+    pdl_run_cycles(1);
+    assert_int_equal(value(q_a), -1000);
+}
+
 /* ---- order independence: shuffle the process order, same result ---- */
 static struct pdl_quantity n_x, n_y, n_z;
 static struct pdl_fquantity n_f;
@@ -519,6 +556,7 @@ int main(void)
         cmocka_unit_test_setup(test_add_value_sums_contributions, setup),
         cmocka_unit_test_setup(test_clipping_both_bounds, setup),
         cmocka_unit_test_setup(test_clip_applies_to_the_sum, setup),
+        cmocka_unit_test_setup(test_clipping_at_int32_extremes, setup),
         cmocka_unit_test_setup(test_shuffled_order_same_result, setup),
         cmocka_unit_test_setup(test_pv_periods, setup),
         cmocka_unit_test_setup(test_dt, setup),
