@@ -17,6 +17,7 @@
  * (a few ms, i2c.c), this only guards against a starved service thread. */
 #define SAMPLER_WAIT_MS 500u
 #define SAMPLER_PERIOD_MAX_MS 60000u
+#define SAMPLER_WAIT_TICKS ((SAMPLER_WAIT_MS * K_TICK_HZ + 999u) / 1000u)
 
 static struct sensor_snapshot sampler_latest;
 static struct k_thread sampler_thread;
@@ -27,7 +28,6 @@ static uint32_t sampler_overrun_count;
 
 struct sweep_slot {
     struct i2c_xfer x;
-    uint8_t control;
     uint8_t rd[ANALOG_CHIP_READ_LEN];
 };
 
@@ -38,9 +38,14 @@ static struct k_mutex sweep_lock;
 static struct k_sem sweep_done;
 static uint8_t sweep_ready;
 static unsigned sweep_left;   /* transactions still running; written with interrupts masked */
+/* The chains (one per bus) as built for the chip locations of these probe
+ * generations; rebuilt when analog_init or bio_init probed again. */
+static struct i2c_xfer *sweep_chain[I2C_BUS_COUNT];
+static uint32_t sweep_analog_gen, sweep_bio_gen;
+static uint8_t sweep_built;
 
-/* The last transaction of a sweep wakes the sweeping thread: one wake-up per
- * sweep, not one per chip. Runs in the I2C handler or service thread. */
+/* The last bus to finish wakes the sweeping thread: one wake-up per sweep,
+ * not one per chip. Runs in the I2C handler or service thread. */
 static void sweep_xfer_done(struct i2c_xfer *x, void *arg)
 {
     (void)x;
@@ -66,69 +71,79 @@ static void sweep_init_once(void)
     k_arch_irq_restore(s);
 }
 
-/* Fills and submits every slot; returns how many are running. A bus runs its
- * queue in order, so only the last slot queued on each bus gets the callback
- * (the others end without any kernel call in the interrupt handler). */
-static unsigned sweep_submit(void)
+/* Builds one chain of messages per bus: the chips' reads linked with
+ * repeated STARTs (i2c.h, `more`), so a sweep costs one queue entry, one
+ * start and one completion per bus instead of one per chip. A chip not found
+ * gets its error as msg_status and no message. */
+static void sweep_build(void)
 {
-    unsigned running = 0, bus_of[SAMPLER_XFERS];
-    int last_on_bus[I2C_BUS_COUNT];
-    uint32_t s;
+    struct i2c_xfer *tail[I2C_BUS_COUNT] = { NULL };
 
     for (unsigned b = 0; b < I2C_BUS_COUNT; b++)
-        last_on_bus[b] = -1;
+        sweep_chain[b] = NULL;
     for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
         struct sweep_slot *sl = &sweep_slots[i];
+        unsigned bus = 0;
         uint8_t addr = 0;
+        const uint8_t *control = NULL;
         int rc;
-        sl->x.rd = sl->rd;
-        sl->x.next = NULL;
-        sl->x.done = NULL;
+        sl->x = (struct i2c_xfer){ .rd = sl->rd };
         if (i < ANALOG_CHIPS) {
-            rc = analog_chip_location(i, &bus_of[i], &addr, &sl->control);
-            sl->x.wr = &sl->control;
+            rc = analog_chip_location(i, &bus, &addr, &control);
+            sl->x.wr = control;
             sl->x.wr_len = 1;
             sl->x.rd_len = ANALOG_CHIP_READ_LEN;
         } else {
-            rc = bio_chip_location(i - ANALOG_CHIPS, &bus_of[i], &addr);
-            sl->x.wr = NULL;
-            sl->x.wr_len = 0;
+            rc = bio_chip_location(i - ANALOG_CHIPS, &bus, &addr);
             sl->x.rd_len = 1;
         }
         sl->x.addr7 = addr;
-        sl->x.status = rc;               /* not I2C_PENDING: not queued yet */
-        if (rc == DRV_OK)
-            last_on_bus[bus_of[i]] = (int)i;
-    }
-    sweep_left = 1u;                     /* 1: none can finish the count early */
-    for (unsigned b = 0; b < I2C_BUS_COUNT; b++) {
-        if (last_on_bus[b] >= 0) {
-            sweep_slots[last_on_bus[b]].x.done = sweep_xfer_done;
-            sweep_left++;
-        }
-    }
-    for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-        struct sweep_slot *sl = &sweep_slots[i];
-        int rc;
-        if (sl->x.status != DRV_OK)
+        sl->x.msg_status = rc;
+        if (rc != DRV_OK)
             continue;
-        rc = i2c_submit(bus_of[i], &sl->x);
-        if (rc == DRV_OK) {
-            running++;
-        } else {
-            sl->x.status = rc;
-            if (sl->x.done != NULL) {    /* its bus' callback will not come */
-                s = k_arch_irq_save();
-                sweep_left--;
-                k_arch_irq_restore(s);
-            }
+        if (tail[bus] != NULL)
+            tail[bus]->more = &sl->x;
+        else
+            sweep_chain[bus] = &sl->x;
+        tail[bus] = &sl->x;
+    }
+    sweep_analog_gen = analog_generation();
+    sweep_bio_gen = bio_generation();
+    sweep_built = 1;
+}
+
+/* Queues every bus's chain; the last bus to finish posts sweep_done. */
+static void sweep_submit(void)
+{
+    uint32_t s;
+
+    if (!sweep_built || sweep_analog_gen != analog_generation() || sweep_bio_gen != bio_generation())
+        sweep_build();
+    sweep_left = 1u;                     /* 1: none can finish the count early */
+    for (unsigned bus = 0; bus < I2C_BUS_COUNT; bus++) {
+        struct i2c_xfer *x = sweep_chain[bus];
+        int rc;
+        if (x == NULL)
+            continue;
+        x->done = sweep_xfer_done;
+        x->status = 0;
+        x->next = NULL;
+        s = k_arch_irq_save();
+        sweep_left++;
+        k_arch_irq_restore(s);
+        rc = i2c_submit(bus, x);
+        if (rc != DRV_OK) {
+            for (struct i2c_xfer *m = x; m != NULL; m = m->more)
+                m->msg_status = rc;
+            s = k_arch_irq_save();
+            sweep_left--;
+            k_arch_irq_restore(s);
         }
     }
     s = k_arch_irq_save();
     if (--sweep_left == 0u)
         (void)k_sem_post(&sweep_done);
     k_arch_irq_restore(s);
-    return running;
 }
 
 int sampler_sweep(struct sensor_snapshot *out)
@@ -137,39 +152,56 @@ int sampler_sweep(struct sensor_snapshot *out)
     k_ticks_t start;
 
     sweep_init_once();
-    if (k_mutex_lock_ticks(&sweep_lock, k_ms_to_ticks(SAMPLER_WAIT_MS)) != K_OK)
+    if (k_mutex_lock_ticks(&sweep_lock, SAMPLER_WAIT_TICKS) != K_OK)
         return (int)SAMPLER_XFERS;
     start = k_ticks();
     (void)k_sem_trywait(&sweep_done);            /* a stale post from a given-up sweep */
-    (void)sweep_submit();
+    sweep_submit();
     /* Binary inputs while the bus works. */
     out->binin = binin_read_all();
     out->valid = SAMPLER_VALID_BININ;
     out->last_error = 0;
-    if (k_sem_wait_ticks(&sweep_done, k_ms_to_ticks(SAMPLER_WAIT_MS)) != K_OK) {
+    if (k_sem_wait_ticks(&sweep_done, SAMPLER_WAIT_TICKS) != K_OK) {
         /* Only if the I2C service thread is starved: every transaction ends by
          * its deadline, and the slots must not be reused before. */
         for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-            while (sweep_slots[i].x.status == I2C_PENDING)
+            while (sweep_slots[i].x.msg_status == I2C_PENDING)
                 (void)k_sleep_ticks(1u);
         }
     }
-    for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-        const struct sweep_slot *sl = &sweep_slots[i];
-        if (sl->x.status != DRV_OK) {
-            failed++;
-            out->last_error = (int8_t)sl->x.status;
-            continue;
+    {
+        /* Unpacked with no per-byte index arithmetic (this runs every sweep). */
+        uint8_t *dst = out->analog;
+        uint32_t valid = out->valid, bit = 0xFul;
+        int err = 0;
+        for (unsigned i = 0; i < ANALOG_CHIPS; i++, dst += 4, bit <<= 4) {
+            const struct sweep_slot *sl = &sweep_slots[i];
+            if (sl->x.msg_status != DRV_OK) {
+                err = sl->x.msg_status;
+                failed++;
+                continue;
+            }
+            dst[0] = sl->rd[1];              /* rd[0]: the previous conversion */
+            dst[1] = sl->rd[2];
+            dst[2] = sl->rd[3];
+            dst[3] = sl->rd[4];
+            valid |= bit;
         }
-        if (i < ANALOG_CHIPS) {
-            for (unsigned k = 0; k < 4u; k++)
-                out->analog[4u * i + k] = sl->rd[k + 1u];
-            out->valid |= 0xFul << (4u * i);
-        } else {
-            unsigned c = i - ANALOG_CHIPS;
-            out->bio = (uint16_t)((out->bio & ~(0xFFu << (8u * c))) | ((unsigned)sl->rd[0] << (8u * c)));
-            out->valid |= SAMPLER_VALID_BIO0 << c;
+        for (unsigned c = 0; c < BIO_CHIPS; c++) {
+            const struct sweep_slot *sl = &sweep_slots[ANALOG_CHIPS + c];
+            if (sl->x.msg_status != DRV_OK) {
+                err = sl->x.msg_status;
+                failed++;
+                continue;
+            }
+            if (c == 0)
+                out->bio = (uint16_t)((out->bio & 0xFF00u) | sl->rd[0]);
+            else
+                out->bio = (uint16_t)((out->bio & 0x00FFu) | ((unsigned)sl->rd[0] << 8));
+            valid |= SAMPLER_VALID_BIO0 << c;
         }
+        out->valid = valid;
+        out->last_error = (int8_t)err;
     }
     out->ticks = start;
     out->time_us = ticks_to_us(start);
