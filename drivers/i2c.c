@@ -116,8 +116,17 @@ static inline __attribute__((always_inline)) void i2c_irq(struct i2c_bus *b)
      * could switch threads and let another instance of this interrupt run
      * between our status read and register write. About 25 instructions. */
     __asm__ __volatile__("ori.w #0x0700,%%sr" : : : "memory", "cc");
+    enum i2c_fsm_event ev;
     b->stats.interrupts++;
-    if (i2c_fsm_interrupt(&b->fsm) == I2C_FSM_DONE) {
+    ev = i2c_fsm_interrupt(&b->fsm);
+    if (ev == I2C_FSM_RUNNING)          /* most interrupts: one test */
+        return;
+    if (ev == I2C_FSM_SPURIOUS && b->fsm.x == NULL) {
+        /* A request with nothing on the wire (cannot happen with the
+         * sequences used; would repeat forever): writing PIN drops it. */
+        b->stats.spurious++;
+        I2C_FSM_WR(&b->fsm, PCF_S1, PCF_CTL_IDLE);
+    } else if (ev == I2C_FSM_DONE) {
         if (b->head->done != NULL) {   /* it may wake a thread */
             k_isr_enter();
             complete_head(b);

@@ -100,7 +100,7 @@ int i2c_scan(unsigned bus, uint8_t *found, unsigned max);
 
 /* Counters per bus, for reports and tests. */
 struct i2c_stats {
-    uint32_t done, absent, arb, timeouts, resets, interrupts;
+    uint32_t done, absent, arb, timeouts, resets, interrupts, spurious;
 };
 int i2c_get_stats(unsigned bus, struct i2c_stats *out);
 
