@@ -11,7 +11,8 @@
  * steps: over one 10 ms period that quantisation alone is 10 %. TCR1 wraps
  * after 62.5 ms, so older samples are not used; with only an older one, the
  * counts are divided by the time since its sample; with no edge in a period,
- * the speed is bounded by one count per the time since the last edge.
+ * the speed is bounded by one count per the time since the last edge, and
+ * after MOTOR_STOPPED_US without one (under 4 counts/s) it is 0.
  *
  * Concurrency: the service thread and the API callers share each motor's
  * state; every access is a short section with interrupts masked (no lock a
@@ -33,6 +34,8 @@
  * so that the model's 1 ms edge steps make at most about 3 % of it. */
 #define MOTOR_SPEED_WINDOW 4u
 #define MOTOR_AGE_MAX_US 2000000u   /* ages stop here (no wrap) */
+/* No edge for this long reads as standing still (below 4 counts/s). */
+#define MOTOR_STOPPED_US 250000u
 
 struct motor_wiring {
     uint8_t pwm;       /* TPU channel */
@@ -138,7 +141,7 @@ static void motor_sample(unsigned m, uint32_t dt_us)
     if (counts == 0) {
         /* No edge since the last change: at most one count in that time. */
         uint32_t since = st->hist[st->newest].valid ? st->hist[st->newest].age_us : MOTOR_AGE_MAX_US;
-        int32_t bound = (int32_t)(1000000u / since);
+        int32_t bound = since >= MOTOR_STOPPED_US ? 0 : (int32_t)(1000000u / since);
         if (st->speed > bound)
             st->speed = bound;
         else if (st->speed < -bound)

@@ -10,13 +10,15 @@
  *   itc CH EDGES           tpu_itc_start           itcget CH -> ok COUNT    itcclr CH
  *   qdec A B               tpu_qdec_start          qpos A -> ok POS         qset A POS
  *   irq CH                 count CH's interrupts   irqget CH -> ok COUNT (tpu_irq_count too)
+ *   irqwait CH MS          -> ok (CH's interrupts during MS ms)
  *   release CH             tpu_release
  *   motor M PERMILLE       motor_set               enc M -> ok POS SPEED POWER
  *   speed M V              motor_set_speed         off M   gains M KP KI
  *   period MS              motor_control_start     stats -> ok PERIODS PERIOD_MS LATE
  *   wait MS                sleeps MS (virtual time)
  *   step M V MS            motor_set_speed, then one "T_US SPEED POWER" sample per
- *                          service period for MS ms -> ok N then N lines
+ *                          service period for MS ms -> ok N T0_US then N lines
+ *                          (T0_US: the tick time of the set-point change)
  *   time                   -> ok UPTIME_MS
  */
 #include <stdint.h>
@@ -117,17 +119,23 @@ static void reply(int r)
 static void step_response(unsigned m, int32_t v, int32_t ms)
 {
     struct motor_service_stats st;
-    uint32_t start_periods, last_periods, t0, n = 0;
+    uint32_t last_periods, t0, n = 0, start_us;
     static int32_t speeds[512];
     static int16_t powers[512];
     static uint32_t times[512];
-    int r = motor_set_speed(m, v);
-    if (r < 0 || ms <= 0) {
-        reply(r < 0 ? r : DRV_ERR_RANGE);
+    int r;
+    if (ms <= 0) {
+        reply(DRV_ERR_RANGE);
+        return;
+    }
+    start_us = (uint32_t)(((uint64_t)k_ticks() * 1000000u) / K_TICK_HZ);
+    r = motor_set_speed(m, v);
+    if (r < 0) {
+        reply(r);
         return;
     }
     (void)motor_service_stats(&st);
-    start_periods = last_periods = st.periods;
+    last_periods = st.periods;
     t0 = k_uptime_ms();
     while (k_uptime_ms() - t0 < (uint32_t)ms && n < 512u) {
         (void)k_sleep_ticks(1);
@@ -142,8 +150,7 @@ static void step_response(unsigned m, int32_t v, int32_t ms)
             n++;
         }
     }
-    (void)start_periods;
-    k_printf("ok %lu\n", (unsigned long)n);
+    k_printf("ok %lu %lu\n", (unsigned long)n, (unsigned long)start_us);
     for (uint32_t i = 0; i < n; i++)
         k_printf("%lu %ld %d\n", (unsigned long)times[i], (long)speeds[i], (int)powers[i]);
 }
@@ -209,6 +216,12 @@ static void run_command(char *line)
             reply(DRV_ERR_CHANNEL);
         else
             k_printf("ok %lu %lu\n", (unsigned long)irq_counts[ch], (unsigned long)tpu_irq_count(ch));
+    } else if (str_eq(w, "irqwait") && n == 2 && ch < TPU_CHANNELS && a[1] >= 0) {
+        /* Interrupts of ch during MS ms, counted inside the firmware: the
+         * host's own pauses between commands do not enter the count. */
+        uint32_t before = irq_counts[ch];
+        (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[1]));
+        k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
     } else if (str_eq(w, "release") && n == 1) {
         reply(tpu_release(ch));
     } else if (str_eq(w, "motor") && n == 2) {
