@@ -16,8 +16,9 @@
  *
  * Concurrency: the service thread and the API callers share each motor's
  * state; every access is a short section with interrupts masked (no lock a
- * caller could wait on), and the thread applies a controller output only if
- * the motor is still under closed loop when it does.
+ * caller could wait on). The thread computes the controller step on a copy
+ * and applies it only if the motor is still under closed loop and no API
+ * call changed it in between (a generation count).
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -63,6 +64,7 @@ struct motor_state {
     int32_t power;           /* per-mille applied */
     int8_t direction;        /* -1, 0, 1 as the DUART bits are now */
     uint8_t closed;          /* under the speed controller */
+    uint32_t generation;     /* counts API changes (set-point, gains, open loop) */
     int32_t setpoint;        /* counts/s */
     struct motor_pi pi;
     /* speed estimate: the last samples that saw the count change */
@@ -189,13 +191,28 @@ static void *motor_service(void *arg)
         (void)k_sleep_until(next);
         for (m = 0; m < MOTOR_COUNT; m++) {
             struct motor_state *st = &motors[m];
-            uint32_t irq;
-            int32_t out;
+            struct motor_pi pi;
+            int32_t setpoint, speed, out;
+            uint32_t irq, generation;
+            uint8_t closed;
 
             motor_sample(m, dt_us);
+            /* The controller step (64-bit arithmetic) runs on a copy with
+             * interrupts enabled; the result is applied only if no API call
+             * changed the motor meanwhile (generation). */
             irq = k_arch_irq_save();
-            if (st->closed) {
-                out = motor_pi_step(&st->pi, st->setpoint, st->speed, dt_us);
+            closed = st->closed;
+            generation = st->generation;
+            pi = st->pi;
+            setpoint = st->setpoint;
+            speed = st->speed;
+            k_arch_irq_restore(irq);
+            if (!closed)
+                continue;
+            out = motor_pi_step(&pi, setpoint, speed, dt_us);
+            irq = k_arch_irq_save();
+            if (st->closed && st->generation == generation) {
+                st->pi = pi;
                 (void)motor_apply(m, out);
             }
             k_arch_irq_restore(irq);
@@ -262,6 +279,7 @@ int motor_set(unsigned m, int permille)
         return DRV_ERR_RANGE;
     irq = k_arch_irq_save();
     motors[m].closed = 0;
+    motors[m].generation++;
     r = motor_apply(m, permille);
     k_arch_irq_restore(irq);
     return r;
@@ -314,6 +332,7 @@ int motor_set_speed(unsigned m, int32_t counts_per_s)
         motor_pi_preset(&motors[m].pi, motors[m].power);
     motors[m].setpoint = counts_per_s;
     motors[m].closed = 1;
+    motors[m].generation++;
     k_arch_irq_restore(irq);
     return DRV_OK;
 }
@@ -334,6 +353,7 @@ int motor_set_gains(unsigned m, int32_t kp, int32_t ki)
     irq = k_arch_irq_save();
     motors[m].pi.kp = kp;
     motors[m].pi.ki = ki;
+    motors[m].generation++;
     k_arch_irq_restore(irq);
     return DRV_OK;
 }

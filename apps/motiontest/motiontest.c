@@ -19,6 +19,8 @@
  *   step M V MS            motor_set_speed, then one "T_US SPEED POWER" sample per
  *                          service period for MS ms -> ok N T0_US then N lines
  *                          (T0_US: the tick time of the set-point change)
+ *   odo MMPC BASE          odometry_init over motors 0 (left) and 2 (right), geometry Q16 mm
+ *   odoget                 odometry_update from the motor positions -> ok X Y HEADING
  *   time                   -> ok UPTIME_MS
  */
 #include <stdint.h>
@@ -28,6 +30,7 @@
 #include "drivers/drv_err.h"
 #include "drivers/mc68681.h"
 #include "drivers/motor.h"
+#include "drivers/odometry.h"
 #include "drivers/tpu.h"
 
 #define LINE_MAX 80u
@@ -36,6 +39,10 @@
 static struct k_thread test_thread;
 K_STACK_DEFINE(test_stack, 2048u);
 static volatile uint32_t irq_counts[TPU_CHANNELS];
+/* Odometry over motor 0 (left wheel) and motor 2 (right), as CubeOS' icontrol. */
+static struct odometry odo;
+#define ODO_LEFT 0u
+#define ODO_RIGHT 2u
 
 static void count_irq(unsigned ch, void *arg)
 {
@@ -259,6 +266,25 @@ static void run_command(char *line)
         reply(DRV_OK);
     } else if (str_eq(w, "step") && n == 3) {
         step_response(ch, a[1], a[2]);
+    } else if (str_eq(w, "odo") && n == 2) {
+        int32_t l = 0, rt = 0;
+        r = motor_position(ODO_LEFT, &l);
+        if (r >= 0)
+            r = motor_position(ODO_RIGHT, &rt);
+        if (r >= 0)
+            r = odometry_init(&odo, a[0], a[1], l, rt);
+        reply(r);
+    } else if (str_eq(w, "odoget") && n == 0) {
+        int32_t l = 0, rt = 0;
+        r = motor_position(ODO_LEFT, &l);
+        if (r >= 0)
+            r = motor_position(ODO_RIGHT, &rt);
+        if (r < 0) {
+            reply(r);
+        } else {
+            odometry_update(&odo, l, rt);
+            k_printf("ok %ld %ld %lu\n", (long)odo.x, (long)odo.y, (unsigned long)odo.heading);
+        }
     } else if (str_eq(w, "time") && n == 0) {
         k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
     } else {
