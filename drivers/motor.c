@@ -125,6 +125,16 @@ static int motor_check(unsigned m)
     return DRV_OK;
 }
 
+/* counts / (ticks / TCR1_HZ). TCR1_HZ is 2^20: with fewer than 2^11 counts
+ * the product fits 32 bits and the CPU32's DIVS.L does it; more (only at
+ * very high speeds) takes libgcc's 64-bit division. */
+static int32_t motor_counts_per_s(int32_t counts, uint16_t ticks)
+{
+    if (counts > -2048 && counts < 2048)
+        return (counts * (int32_t)TPU_TCR1_HZ) / (int32_t)ticks;
+    return (int32_t)((int64_t)counts * TPU_TCR1_HZ / ticks);
+}
+
 /* One speed sample of motor m, dt_us after the previous one. */
 static void motor_sample(unsigned m, uint32_t dt_us)
 {
@@ -158,8 +168,8 @@ static void motor_sample(unsigned m, uint32_t dt_us)
             oldest = k;
     }
     if (oldest < MOTOR_SPEED_WINDOW && (uint16_t)(edge - st->hist[oldest].edge) != 0u) {
-        st->speed = (int32_t)((int64_t)(pos - st->hist[oldest].pos) * TPU_TCR1_HZ /
-                              (uint16_t)(edge - st->hist[oldest].edge));
+        st->speed = motor_counts_per_s(pos - st->hist[oldest].pos,
+                                       (uint16_t)(edge - st->hist[oldest].edge));
     } else {
         /* Only an old edge to go by: counts over the time since its sample. */
         uint32_t since = st->hist[st->newest].valid ? st->hist[st->newest].age_us : dt_us;
@@ -180,7 +190,8 @@ static void *motor_service(void *arg)
 
     for (;;) {
         k_ticks_t period = motor_period_ticks;
-        uint32_t dt_us = (uint32_t)(((uint64_t)period * 1000000u) / K_TICK_HZ);
+        /* period <= 1024 ticks (1 s): the product stays within 32 bits */
+        uint32_t dt_us = (uint32_t)period * 1000000u / K_TICK_HZ;
         unsigned m;
 
         next += period;

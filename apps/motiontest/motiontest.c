@@ -21,6 +21,7 @@
  *                          (T0_US: the tick time of the set-point change)
  *   odo MMPC BASE          odometry_init over motors 0 (left) and 2 (right), geometry Q16 mm
  *   odoget                 odometry_update from the motor positions -> ok X Y HEADING
+ *   cpuload MS             -> ok TURNS of a lowest-priority busy loop during MS ms
  *   time                   -> ok UPTIME_MS
  */
 #include <stdint.h>
@@ -43,6 +44,49 @@ static volatile uint32_t irq_counts[TPU_CHANNELS];
 static struct odometry odo;
 #define ODO_LEFT 0u
 #define ODO_RIGHT 2u
+
+static void reply(int r)
+{
+    if (r < 0)
+        k_printf("err %d\n", r);
+    else
+        k_printf("ok\n");
+}
+
+/* CPU load: a lowest-priority thread counts loop turns while the test
+ * thread sleeps; fewer turns than in a quiet run = time taken by the rest. */
+static struct k_thread busy_thread;
+K_STACK_DEFINE(busy_stack, 512u);
+static volatile uint32_t busy_count;
+static volatile int busy_run;
+
+static void *busy_main(void *arg)
+{
+    (void)arg;
+    while (busy_run)
+        busy_count++;
+    return NULL;
+}
+
+static void cpu_load(int32_t ms)
+{
+    int r;
+    busy_count = 0;
+    busy_run = 1;
+    r = k_thread_create(&busy_thread, "busy", busy_main, NULL, busy_stack, sizeof busy_stack,
+                        K_PRIO_APP_MIN);
+    if (r != K_OK) {
+        reply(DRV_ERR_STATE);
+        return;
+    }
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)ms));
+    busy_run = 0;
+    r = k_thread_join(&busy_thread, NULL, K_TICK_HZ);
+    if (r != K_OK)
+        reply(DRV_ERR_TIMEOUT);
+    else
+        k_printf("ok %lu\n", (unsigned long)busy_count);
+}
 
 static void count_irq(unsigned ch, void *arg)
 {
@@ -113,14 +157,6 @@ static int parse(char *line, char **word, int32_t *num, unsigned max)
         num[count++] = sign * v;
     }
     return (int)count;
-}
-
-static void reply(int r)
-{
-    if (r < 0)
-        k_printf("err %d\n", r);
-    else
-        k_printf("ok\n");
 }
 
 static void step_response(unsigned m, int32_t v, int32_t ms)
@@ -285,6 +321,8 @@ static void run_command(char *line)
             odometry_update(&odo, l, rt);
             k_printf("ok %ld %ld %lu\n", (long)odo.x, (long)odo.y, (unsigned long)odo.heading);
         }
+    } else if (str_eq(w, "cpuload") && n == 1 && a[0] > 0) {
+        cpu_load(a[0]);
     } else if (str_eq(w, "time") && n == 0) {
         k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
     } else {

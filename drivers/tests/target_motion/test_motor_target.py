@@ -142,3 +142,30 @@ def test_bad_arguments(board):
     # Nothing moved.
     for m in range(3):
         assert board.get(f"/motor{m}", "duty") == 0
+
+
+def test_service_cpu_load(board):
+    """CPU time the motor service takes, from the turns a lowest-priority busy
+    loop makes in 1 s of virtual time (256 ns per instruction under -icount
+    shift=8): the service at 1 s (one run in the window) is the baseline."""
+    board.cmd("period 1000")
+    board.cmd("wait 1100")                    # the old 10 ms sleep has ended
+    quiet = board.cmd("cpuload 1000")[0]
+    board.cmd("period 10")
+    board.cmd("wait 1100")                    # the thread now runs at 10 ms
+    at_rest = board.cmd("cpuload 1000")[0]
+    board.cmd("speed 0 800")
+    board.cmd("speed 1 -600")
+    board.cmd("speed 2 400")
+    board.cmd("wait 300")
+    closed = board.cmd("cpuload 1000")[0]
+    for m in range(3):
+        board.cmd(f"off {m}")
+    rest_pct = (1 - at_rest / quiet) * 100
+    closed_pct = (1 - closed / quiet) * 100
+    print(f"\nmotor service at 10 ms (10.74 ms = 11 ticks): {rest_pct:.1f} % CPU sampling 3 idle "
+          f"encoders, {closed_pct:.1f} % with 3 motors under PI control "
+          f"({closed_pct * 10.74 * 10:.0f} us of every period)")
+    assert 0 < rest_pct < closed_pct < 12
+    for m in range(3):
+        settle(board, m)
