@@ -5,7 +5,8 @@
  * inputs into the sensor quantities (from one snapshot, so all sensors of a
  * cycle are from the same instant) and writes each actuator quantity whose
  * value changed to its driver (writes over I2C cost ~0.3 ms each, so
- * unchanged values are not rewritten).
+ * unchanged values are not rewritten). An input the drivers failed to read
+ * (the snapshot's valid bits) leaves its sensor quantities unchanged.
  *
  * The ports themselves are the platform's (pdl_board.c: the drivers;
  * host/pdl_host.c: arrays a test or a simulator fills and reads).
@@ -143,6 +144,15 @@ static int32_t pdl_clip(int32_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
+static uint32_t pdl_valid_bit(uint8_t port, uint8_t index)
+{
+    switch (port) {
+    case PDL_ANALOG_IN: return 1ul << index;
+    case PDL_BINARY_IN: return PDL_VALID_BININ;
+    default:            return index < 8u ? PDL_VALID_BIO0 : PDL_VALID_BIO1;
+    }
+}
+
 static int32_t pdl_input_of(const struct pdl_inputs *in, uint8_t port, uint8_t index)
 {
     switch (port) {
@@ -162,7 +172,9 @@ void pdl_bind_refresh_sensors(void)
     for (i = 0; i < pdl_nsensor_bindings; i++) {
         const struct pdl_bound *b = &pdl_bindings[i];
         struct pdl_sensor *s = (struct pdl_sensor *)(void *)b->q;
-        s->cur = pdl_clip(pdl_input_of(&in, b->port, b->index), s->min, s->max);
+        /* a value the drivers could not read keeps the sensor's last value */
+        if (in.valid & pdl_valid_bit(b->port, b->index))
+            s->cur = pdl_clip(pdl_input_of(&in, b->port, b->index), s->min, s->max);
     }
 }
 

@@ -30,6 +30,7 @@
 #if defined(__has_include)
 #if __has_include("drivers/sampler.h")
 #include "drivers/sampler.h"
+#include "drivers/board_io.h"
 #define PDL_HAVE_SAMPLER 1
 #endif
 #if __has_include("drivers/motor.h")
@@ -57,9 +58,10 @@
 #ifndef PDL_STACK_BYTES
 #define PDL_STACK_BYTES 2048u
 #endif
-/* Sampler period when run_pdl starts it (ms). */
+/* Sampler period when run_pdl starts it (ms): a full sweep of the I/O board
+ * takes 6 ms (drivers/README.md), so sensors are at most ~16 ms old. */
 #ifndef PDL_SAMPLER_MS
-#define PDL_SAMPLER_MS 5u
+#define PDL_SAMPLER_MS 10u
 #endif
 
 static struct k_bsched pdl_thread;
@@ -93,9 +95,10 @@ void pdl_platform_read_inputs(struct pdl_inputs *in)
     for (i = 0; i < 24u; i++)
         in->analog[i] = snap.analog[i];
     in->bio = snap.bio;
-    in->binin = snap.binin;
+    in->binin = (uint8_t)(snap.binin << 1);     /* the sampler has IP1 in bit 0 */
+    in->valid = snap.seq == 0u ? 0u : snap.valid;
 #else
-    *in = (struct pdl_inputs){{0}, 0, 0};   /* refused at run_pdl: never reached */
+    *in = (struct pdl_inputs){{0}, 0, 0, 0};   /* refused at run_pdl: never reached */
 #endif
 }
 
@@ -153,15 +156,61 @@ static int pdl_port_available(enum pdl_port port)
     }
 }
 
+static int pdl_driver_failed(int code, const char *what)
+{
+    pdl_stats.last_driver_code = code;
+    return pdl_refuse(PDL_ERR_DRIVER, what);
+}
+
+/* Brings up the drivers the bindings use, each once per boot: the I/O board
+ * (board_io_init) for analog/binary ports, the sampler for inputs, the
+ * motors, the TPU for PWM. */
 int pdl_platform_start_ports(void)
 {
-    int p;
+    static int io_up, sampler_up, motors_up, tpu_up;
+    int p, r;
     for (p = PDL_ANALOG_IN; p < PDL_PORT_END; p++) {
-        if (pdl_bind_uses((enum pdl_port)p) && !pdl_port_available((enum pdl_port)p)) {
-            pdl_stats.last_driver_code = 0;
-            return pdl_refuse(PDL_ERR_DRIVER, "run_pdl: a bound port's driver is not in this image");
-        }
+        if (pdl_bind_uses((enum pdl_port)p) && !pdl_port_available((enum pdl_port)p))
+            return pdl_driver_failed(0, "run_pdl: a bound port's driver is not in this image");
     }
+    r = 0;
+#ifdef PDL_HAVE_SAMPLER
+    if (!io_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
+                   pdl_bind_uses(PDL_BIO_IN) || pdl_bind_uses(PDL_ANALOG_OUT) ||
+                   pdl_bind_uses(PDL_BIO_OUT) || pdl_bind_uses(PDL_FAST_OUT))) {
+        r = board_io_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: board_io_init");
+        io_up = 1;
+    }
+    if (!sampler_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
+                        pdl_bind_uses(PDL_BIO_IN))) {
+        r = sampler_start(PDL_SAMPLER_MS);
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: sampler_start");
+        sampler_up = 1;
+    }
+#endif
+#ifdef PDL_HAVE_MOTOR
+    if (!motors_up && pdl_bind_uses(PDL_MOTOR)) {
+        r = motor_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: motor_init");
+        motors_up = 1;
+    }
+#endif
+#ifdef PDL_HAVE_TPU
+    if (!tpu_up && pdl_bind_uses(PDL_PWM)) {
+        r = tpu_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: tpu_init");
+        tpu_up = 1;
+    }
+#endif
+    (void)io_up;
+    (void)sampler_up;
+    (void)motors_up;
+    (void)tpu_up;
     return PDL_OK;
 }
 

@@ -43,7 +43,12 @@ struct pdl_inputs {
     uint8_t analog[24];
     uint8_t binin;      /* bit n = DUART IPn (n = 1..5) */
     uint16_t bio;       /* bit n = BIO line n */
+    uint32_t valid;     /* read successfully: bit i analog i, PDL_VALID_* */
 };
+#define PDL_VALID_BIO0  (1ul << 24)     /* BIO0-7 (the sampler's layout) */
+#define PDL_VALID_BIO1  (1ul << 25)     /* BIO8-15 */
+#define PDL_VALID_BININ (1ul << 26)
+#define PDL_VALID_ALL   0x07FFFFFFul
 void pdl_bind_refresh_sensors(void);
 /* Writes every actuator whose value changed (or all, with force). */
 void pdl_bind_write_actuators(int force);

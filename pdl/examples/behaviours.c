@@ -45,7 +45,7 @@ static void avoid(void)
     int32_t near = l > r ? l : r;
     int32_t turn = (l - r) / 2;                             /* > 0: obstacle on the left */
     int32_t brake = near > 64 ? (near - 64) / 2 : 0;
-    int32_t back = (value(bumper_left) | value(bumper_right)) ? 150 : 0;
+    int32_t back = (value(bumper_left) & value(bumper_right)) ? 0 : 150;   /* 0 = pressed */
     add_value(motor_left, turn - brake - back);
     add_value(motor_right, -turn - brake - back);
 }

@@ -14,8 +14,8 @@
  *   ir_left         analog in 2     0..255     infrared reflection front left, 255 = touching
  *   ir_right        analog in 3     0..255     infrared reflection front right
  *   battery         analog in 4     0..255     battery level, 255 = full (BATTERY_LOW = 100)
- *   bumper_left     binary in 1     0/1        DUART IP1, 1 = pressed
- *   bumper_right    binary in 2     0/1        DUART IP2, 1 = pressed
+ *   bumper_left     binary in 1     0/1        DUART IP1, 0 = pressed (a switch to
+ *   bumper_right    binary in 2     0/1        DUART IP2   ground; the input is pulled up)
  *   motor_left      motor 0         -1000..1000 permille set-point, + = forward
  *   motor_right     motor 1         -1000..1000
  *   seeking_led     LED             0/1        on while the robot seeks the charger

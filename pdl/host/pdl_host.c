@@ -11,7 +11,10 @@
 
 #define PDL_HOST_OUTPUTS 24     /* largest index range of an output port + 1 */
 
-static struct pdl_inputs host_inputs;
+/* As on the board with nothing connected: binary inputs and BIO lines are
+ * pulled up (read 1), analog inputs read 0. */
+#define HOST_INPUTS_IDLE {.binin = 0x3E, .bio = 0xFFFF, .valid = PDL_VALID_ALL}
+static struct pdl_inputs host_inputs = HOST_INPUTS_IDLE;
 static int32_t host_outputs[PDL_PORT_END][PDL_HOST_OUTPUTS];
 static uint32_t host_writes[PDL_PORT_END][PDL_HOST_OUTPUTS];
 static int host_fail[PDL_PORT_END][PDL_HOST_OUTPUTS];
@@ -35,6 +38,8 @@ void pdl_host_echo_reports(int on) { host_echo = on; }
 int pdl_running(void) { return pdl_core_started(); }
 
 void pdl_platform_read_inputs(struct pdl_inputs *in) { *in = host_inputs; }
+
+void pdl_host_set_input_valid(uint32_t valid) { host_inputs.valid = valid; }
 
 int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v)
 {
@@ -116,7 +121,7 @@ int pdl_stop(uint32_t timeout_ms)
 int pdl_reset(void)
 {
     pdl_core_reset();
-    memset(&host_inputs, 0, sizeof host_inputs);
+    host_inputs = (struct pdl_inputs)HOST_INPUTS_IDLE;
     memset(host_outputs, 0, sizeof host_outputs);
     memset(host_writes, 0, sizeof host_writes);
     memset(host_fail, 0, sizeof host_fail);

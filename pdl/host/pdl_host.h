@@ -18,8 +18,14 @@ int pdl_host_set_cycle_us(uint32_t us);
 /* Simulated time of the start of the last cycle, microseconds. */
 uint32_t pdl_host_now_us(void);
 
-/* Board inputs the bound sensors read (values clipped to the port range). */
+/* Board inputs the bound sensors read (values clipped to the port range).
+ * After pdl_reset: analog inputs 0, binary inputs and BIO lines 1 (pulled
+ * up, as on the board with nothing connected). */
 int pdl_host_set_input(enum pdl_port port, unsigned index, int32_t v);
+/* Which inputs count as read (bit i analog i, bit 24 BIO0-7, 25 BIO8-15,
+ * 26 the binary inputs; default all): an unread input leaves its sensors
+ * unchanged, as a failed I2C read does on the board. */
+void pdl_host_set_input_valid(uint32_t valid);
 /* Sets a sensor quantity directly (an unbound one keeps it; a bound one is
  * overwritten from its port at the next cycle). Clipped to its bounds. */
 int pdl_host_set_sensor(struct pdl_sensor *q, int32_t v);

@@ -74,10 +74,10 @@ static void test_avoidance_turns_away_and_backs_up(void **state)
     pdl_run_cycles(100);
     assert_true(left() < 0 && right() < 0);
     inputs(0, 0, 0, 0, 255);
-    pdl_host_set_input(PDL_BINARY_IN, 2, 1);    /* right bumper pressed */
+    pdl_host_set_input(PDL_BINARY_IN, 2, 0);    /* right bumper pressed (pulled low) */
     pdl_run_cycles(100);
     assert_true(left() < 0 && right() < 0);     /* backing up */
-    pdl_host_set_input(PDL_BINARY_IN, 2, 0);
+    pdl_host_set_input(PDL_BINARY_IN, 2, 1);
     pdl_run_cycles(100);
     assert_true(left() > 300 && right() > 300); /* free again: cruising */
 }

@@ -7,6 +7,7 @@
 #include <cmocka.h>
 
 #include "pdl/host/pdl_host.h"
+#include "pdl/pdl_internal.h"   /* PDL_VALID_* */
 
 static int setup(void **state)
 {
@@ -359,6 +360,7 @@ static void test_bindings(void **state)
     add_process(follow);
     add_process(blink);
     pdl_host_set_input(PDL_ANALOG_IN, 5, 100);
+    pdl_host_set_input(PDL_BINARY_IN, 2, 0);
     assert_int_equal(run_pdl(), PDL_OK);
     assert_int_equal(pdl_host_writes(PDL_MOTOR, 1), 1);    /* the initial value */
     pdl_run_cycles(1);
@@ -376,10 +378,20 @@ static void test_bindings(void **state)
     pdl_host_set_input(PDL_ANALOG_IN, 5, 255);
     pdl_host_set_input(PDL_ANALOG_IN, 5, 200);
     assert_int_equal(pdl_host_output(PDL_LED, 0), 0);
-    pdl_host_set_input(PDL_BINARY_IN, 2, 1);
+    pdl_host_set_input(PDL_BINARY_IN, 2, 0);
+    pdl_run_cycles(1);
+    pdl_host_set_input(PDL_BINARY_IN, 2, 1);    /* pulled up: 1 */
     pdl_run_cycles(1);
     assert_int_equal(value(m_led), 1);
     assert_int_equal(pdl_host_output(PDL_LED, 0), 1);
+    /* an input the drivers failed to read keeps its sensor's last value */
+    pdl_host_set_input_valid(PDL_VALID_ALL & ~(1ul << 5));
+    pdl_host_set_input(PDL_ANALOG_IN, 5, 10);
+    pdl_run_cycles(1);
+    assert_int_equal(value(s_light), 200);
+    pdl_host_set_input_valid(PDL_VALID_ALL);
+    pdl_run_cycles(1);
+    assert_int_equal(value(s_light), 10);
 }
 
 static struct pdl_quantity m_big;
