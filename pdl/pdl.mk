@@ -54,3 +54,21 @@ check-pdl-unit: $(PDL_HOST_TESTS)
 	    else f=$$((f + 1)); rc=1; echo "[  FAILED  ] $$src compiled or without '$$want':"; echo "$$out"; fi; \
 	done; \
 	$(call record,pdl-unit,$$p,$$f); [ $$rc -eq 0 ]
+
+# ---- on the emulated board ----
+CHECKS += pdl-target
+PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench)
+
+.PHONY: check-pdl-target pdl-bench
+check-pdl-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS)
+	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) ci/pytest-suite pdl-target pdl/tests/target
+
+# Every figure of pdl/README.md "Speed", printed and kept in build/pdl/bench.txt.
+pdl-bench:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory $(call app_elf,pdl_bench)
+	@mkdir -p $(PDL_BUILD)
+	@BSCHED_QEMU=$(QEMU_M68K) $(PYTHON) pdl/tests/target/pdl_measure.py \
+	    $(call app_elf,pdl_bench) $(QEMU_M68K) | tee $(PDL_BUILD)/bench.txt
