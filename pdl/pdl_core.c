@@ -235,6 +235,19 @@ int pdl_core_plan(void)
     return PDL_OK;
 }
 
+int pdl_core_start(void)
+{
+    int r = pdl_core_plan();
+    if (r != PDL_OK)
+        return r;
+    r = pdl_platform_start_ports();
+    if (r != PDL_OK)
+        return r;
+    pdl_started = 1;
+    pdl_bind_write_actuators(1);    /* the initial values */
+    return PDL_OK;
+}
+
 /* The cycle's path (add_value's first use, running a process, the commit)
  * is compiled for speed, the rest of the runtime for size. */
 #pragma GCC push_options

@@ -26,6 +26,9 @@ void pdl_cycle_end(void);
 extern int pdl_plan_cache_enabled;
 /* Plans the process set (bsched_init); PDL_OK or an error (reported). */
 int pdl_core_plan(void);
+/* run_pdl's common part: plan, bring up the ports, mark the set started
+ * (declarations are refused from now on), write the initial actuator values. */
+int pdl_core_start(void);
 /* Marks the set as started (refuses further declarations). */
 void pdl_core_set_started(int started);
 int pdl_core_started(void);
