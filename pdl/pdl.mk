@@ -33,7 +33,8 @@ $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SR
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
 # Misuse the compiler must refuse: each pdl/tests/refuse/*.c has to fail to
-# compile with the message on its first line ("// expect: TEXT").
+# compile (warnings are errors here, whatever HOST_CFLAGS says) with the
+# message on its first line ("// expect: TEXT").
 PDL_REFUSE_SRCS := $(wildcard pdl/tests/refuse/*.c)
 
 check-pdl-unit: $(PDL_HOST_TESTS)
@@ -48,7 +49,7 @@ check-pdl-unit: $(PDL_HOST_TESTS)
 	done; \
 	for src in $(PDL_REFUSE_SRCS); do \
 	    want=$$(sed -n '1s|^// expect: ||p' $$src); \
-	    out=$$(LC_ALL=C $(HOST_CC) $(PDL_HOST_CFLAGS) -fsyntax-only $$src 2>&1); \
+	    out=$$(LC_ALL=C $(HOST_CC) $(PDL_HOST_CFLAGS) -Werror -fsyntax-only $$src 2>&1); \
 	    if [ $$? -ne 0 ] && [ -n "$$want" ] && echo "$$out" | grep -qF -- "$$want"; then \
 	        p=$$((p + 1)); echo "[       OK ] refused at compile time: $$src"; \
 	    else f=$$((f + 1)); rc=1; echo "[  FAILED  ] $$src compiled or without '$$want':"; echo "$$out"; fi; \

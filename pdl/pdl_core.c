@@ -219,6 +219,8 @@ static void pdl_plan_record(void)
     (void)bsched_init(&pdl_sched, pdl_pv, pdl_nprocs);   /* live stepping */
 }
 
+int pdl_core_plan_recorded(void) { return pdl_plan_cached; }
+
 int pdl_core_plan(void)
 {
     int32_t r;
