@@ -5,6 +5,7 @@
 #                              + compile-time refusals (add_value on a sensor, ...)
 #   make check-pdl-target      a PDL image on the emulated board (pytest over QMP)
 #   make pdl-bench             cycle cost, CPU load at 1 kHz, stack, flash/RAM (emulated board)
+#   make pdl-host-lib          build/pdl/libpdl_host.a: the host runtime for simulators
 
 PDL_BUILD      := $(BUILD)/pdl
 # The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
@@ -21,8 +22,17 @@ ALL += $(PDL_HOST_TESTS)
 CHECKS += pdl-unit
 HOST_UNIT_CHECKS += pdl-unit
 
-.PHONY: pdl-host-tests check-pdl-unit
+.PHONY: pdl-host-tests check-pdl-unit pdl-host-lib
 pdl-host-tests: $(PDL_HOST_TESTS)
+
+# The host runtime as a library, for simulators (the eco arena): link it with
+# -I$(ROOT) -I$(ROOT)/bsched and include pdl/pdl.h and pdl/host/pdl_host.h.
+PDL_HOST_LIB := $(PDL_BUILD)/libpdl_host.a
+pdl-host-lib: $(PDL_HOST_LIB)
+$(PDL_HOST_LIB): $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(PDL_BUILD)/host-obj
+	cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
+	rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
 
 $(PDL_BUILD)/tests/test_pdl: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)

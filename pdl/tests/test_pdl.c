@@ -400,6 +400,16 @@ static void test_float_quantity(void **state)
     assert_float_equal(value(fq), 2.0f, 0.0f);  /* clipped */
 }
 
+/* ---- fixed-point help ---- */
+static void test_mul_shift(void **state)
+{
+    (void)state;
+    assert_int_equal(pdl_mul_shift(3 << 8, 5 << 8, 8), 15 << 8);     /* 3.0 * 5.0 in Q8 */
+    assert_int_equal(pdl_mul_shift(-384, 512, 8), -768);            /* -1.5 * 2.0 */
+    assert_int_equal(pdl_mul_shift(INT32_MAX, 2, 1), INT32_MAX);    /* no overflow inside */
+    assert_int_equal(pdl_mul_shift(-3, 1, 1), -2);                  /* toward minus infinity */
+}
+
 /* ---- bindings: sensors from ports, actuators to ports ---- */
 static struct pdl_sensor s_light, s_bump;
 static struct pdl_quantity m_left, m_led;
@@ -637,6 +647,7 @@ int main(void)
         cmocka_unit_test_setup(test_recorded_plan_equals_live_bsched, setup),
         cmocka_unit_test_setup(test_dt, setup),
         cmocka_unit_test_setup(test_float_quantity, setup),
+        cmocka_unit_test(test_mul_shift),
         cmocka_unit_test_setup(test_bindings, setup),
         cmocka_unit_test_setup(test_actuator_clipped_to_port_and_driver_errors, setup),
         cmocka_unit_test_setup(test_misuse_before_run, setup),
