@@ -42,14 +42,27 @@ $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SR
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
+# The README's complete example ("Programming with PDL"), extracted and run.
+PDL_README_TEST := $(PDL_BUILD)/tests/readme_example
+$(PDL_BUILD)/readme_example.c: README.md
+	@mkdir -p $(@D)
+	awk '/^## Programming with PDL/ { s = 1 } s && /^```c$$/ { c = 1; next } \
+	     c && /^```$$/ { exit } c { print }' README.md > $@
+	@test -s $@ || { echo "no C example under 'Programming with PDL' in README.md"; exit 1; }
+$(PDL_README_TEST): pdl/tests/readme_main.c $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
+ALL += $(PDL_README_TEST)
+
 # Misuse the compiler must refuse: each pdl/tests/refuse/*.c has to fail to
 # compile (warnings are errors here, whatever HOST_CFLAGS says) with the
 # message on its first line ("// expect: TEXT").
 PDL_REFUSE_SRCS := $(wildcard pdl/tests/refuse/*.c)
 
-check-pdl-unit: $(PDL_HOST_TESTS)
+check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 	@$(SETUP) base
 	@p=0; f=0; rc=0; \
+	if $(PDL_README_TEST); then p=1; else f=1; rc=1; fi; \
 	for t in $(PDL_HOST_TESTS); do \
 	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
 	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
