@@ -272,11 +272,15 @@ void pdl_pend(struct pdl_head *h)
         (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
         return;
     }
-    h->pending = 1;
-    if (h->kind == PDL_KIND_INT)
+    if (h->kind == PDL_KIND_INT) {
         pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
-    else
+    } else if (h->kind == PDL_KIND_FLOAT) {
         pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
+    } else {    /* a sensor cast to a quantity: never committed */
+        (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value (not a writable quantity)");
+        return;
+    }
+    h->pending = 1;
 }
 
 void pdl_cycle_begin(uint32_t now_us)
