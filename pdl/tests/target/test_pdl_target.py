@@ -104,6 +104,7 @@ def test_demo_phototaxis_reads_qmp_light_and_turns_the_motors(demo):
     s, left, right = settled(demo, lambda s: s["light"] == [20, 230], "light 20,230")
     assert left > right + 200, (s, left, right)
     assert s["overruns"] == 0 and s["misuse"] == 0 and s["driver_errors"] == 0, s
+    assert 0 < s["stack"] < 2048, s                      # the cycle thread's stack
 
 
 def test_demo_avoids_obstacles_and_backs_up_on_a_bumper(demo):
