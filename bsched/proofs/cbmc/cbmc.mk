@@ -64,8 +64,8 @@ CBMC_ARGS_errors         := N=8
 # induction over the cycles from any state of the periodicity invariant with the
 # closed-form offsets (fast), and bsched_fast_due / bsched_wait equal to bsched_due
 # / wait[] (fast-due). Below the goal bounds (see bsched/proofs/README.md).
-CBMC_FAST_N ?= 8
-CBMC_FAST_P ?= 4
+CBMC_FAST_N ?= 4
+CBMC_FAST_P ?= 3
 CBMC_HARNESS_fast        := fast
 CBMC_ARGS_fast           := N=$(CBMC_FAST_N) P=$(CBMC_FAST_P)
 CBMC_HARNESS_fast-due    := fast
