@@ -52,7 +52,7 @@ static uint32_t collect_classes(const struct bsched *s, const struct bsched_fast
 
     for (u = 0u; u < f->used; u++) {
         /* Y_k - s_k mod 2^k: the first due member (no wrap: both terms <= 2^k). */
-        uint32_t mask = f->classes[u].mask;
+        uint32_t mask = ((uint32_t)1u << f->classes[u].pv) - 1u;
         uint32_t j0 = ((reversed >> f->classes[u].shift) + f->classes[u].lead) & mask;
         uint32_t size = f->classes[u].size;
         uint32_t slot;
@@ -79,7 +79,7 @@ static uint32_t collect_classes(const struct bsched *s, const struct bsched_fast
 static uint32_t collect_laps(const struct bsched *s, const struct bsched_fast *f,
                              uint32_t reversed, uint16_t *out)
 {
-    uint32_t area = f->classes[f->used - 1u].end;
+    uint32_t area = f->end[f->used - 1u];
     uint32_t x = reversed;
     uint32_t done = 0u;
     uint32_t u = 0u;
@@ -90,14 +90,14 @@ static uint32_t collect_laps(const struct bsched *s, const struct bsched_fast *f
         uint32_t stop;
         uint32_t stride;
 
-        while (x >= f->classes[u].end) {
+        while (x >= f->end[u]) {
             u++; /* stops at the last class at the latest: x < area */
         }
         /* (Fields read through the array, not a pointer to the element: the same
          * code for a compiler, far smaller formulas for CBMC.) */
-        runs = ((f->classes[u].end - 1u - x) >> f->maxpv) + 1u;
+        runs = ((f->end[u] - 1u - x) >> f->maxpv) + 1u;
         slot = f->classes[u].first + ((x - f->classes[u].base) >> f->classes[u].shift);
-        stride = f->classes[u].mask + 1u;
+        stride = (uint32_t)1u << f->classes[u].pv;
         stop = done + runs;
         x += runs << f->maxpv; /* <= end - 1 + 2^maxpv: no wrap when f->laps */
         for (; done != stop; done++) {
@@ -152,14 +152,14 @@ int32_t bsched_fast_init(struct bsched_fast *f, const struct bsched *s)
             t.classes[u].first = (uint16_t)d;
             t.classes[u].size = 0u;
             t.classes[u].base = (uint32_t)area; /* only used when the whole area fits */
-            t.classes[u].mask = ((uint32_t)1u << pv) - 1u;
+            t.classes[u].unused = 0u;
             /* Member 0's offset is rev_k(s_k), and rev_k is an involution. */
             t.classes[u].lead = ((uint32_t)1u << pv) - reverse_low_bits(s->offset[p], pv);
             t.used++;
         }
         t.classes[t.used - 1u].size++;
         area += (uint64_t)1u << (s->maxpv - pv);
-        t.classes[t.used - 1u].end = (uint32_t)area;
+        t.end[t.used - 1u] = (uint32_t)area;
     }
     t.laps = area + ((uint64_t)1u << s->maxpv) <= 0xFFFFFFFFu ? 1u : 0u;
     if (t.laps != 0u) {
@@ -167,7 +167,8 @@ int32_t bsched_fast_init(struct bsched_fast *f, const struct bsched *s)
          * area below class k in units of 2^-k (Fig. 6; WP's lemma_start_is_area). */
         uint32_t u;
         for (u = 0u; u < t.used; u++) {
-            if ((((t.classes[u].base >> t.classes[u].shift) + t.classes[u].lead) & t.classes[u].mask) != 0u) {
+            if ((((t.classes[u].base >> t.classes[u].shift) + t.classes[u].lead) &
+                 (((uint32_t)1u << t.classes[u].pv) - 1u)) != 0u) {
                 return BSCHED_ERR_STATE;
             }
         }

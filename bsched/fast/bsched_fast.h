@@ -43,16 +43,16 @@
 /* Returned by bsched_wait for a process index >= s->count. */
 #define BSCHED_ERR_INDEX (-6)
 
-/* One priority class k with members, as the dispatch loop reads it. */
+/* One priority class k with members, as the dispatch loop reads it (16 bytes,
+ * so that indexing the table is a shift). */
 struct bsched_class {
     uint32_t lead;  /* 2^k - s_k (s_k of Fig. 6): j0 = (Y_k + lead) mod 2^k */
-    uint32_t mask;  /* 2^k - 1 */
     uint32_t base;  /* where the class's intervals start, in units of 2^-maxpv */
-    uint32_t end;   /* base + c_k 2^(maxpv - k): where they end */
     uint16_t first; /* first slot of the class in s->order[] */
     uint16_t size;  /* c_k >= 1: members of the class */
     uint8_t  pv;    /* k */
     uint8_t  shift; /* maxpv - k: Y_k = rev_k(t mod 2^k) = rev_maxpv(t) >> shift */
+    uint16_t unused;
 };
 
 struct bsched_fast {
@@ -63,6 +63,9 @@ struct bsched_fast {
     uint8_t  maxpv;     /* s->maxpv when built */
     uint8_t  used;      /* classes with members, 1 .. BSCHED_FAST_CLASSES */
     uint8_t  laps;      /* 1: the area plus one lap fits in 32 bits (collect_laps) */
+    /* base + c_k 2^(maxpv - k) of each class: where its intervals end (its own
+     * array: the dispatch loop skips classes by reading only these) */
+    uint32_t end[BSCHED_FAST_CLASSES];
     struct bsched_class classes[BSCHED_FAST_CLASSES]; /* those classes, ascending pv */
 };
 
