@@ -6,8 +6,9 @@ PLAN_CFLAGS   := $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=65535
 CROSS_CC      ?= m68k-linux-gnu-gcc
 CROSS_CFLAGS  := -std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdlib -Wall -Wextra -Wpedantic -Wconversion -Werror
 
-ALL += $(BUILD)/bin/bsched-plan $(BUILD)/tests/test_bsched
-CHECKS += bsched-build bsched-unit bsched-plan
+ALL += $(BUILD)/bin/bsched-plan $(BUILD)/tests/test_bsched $(BUILD)/tests/test_bsched_fast
+CHECKS += bsched-build bsched-unit bsched-fast bsched-plan
+HOST_UNIT_CHECKS += bsched-unit bsched-fast
 
 $(BUILD)/bin/bsched-plan: tools/bsched-plan.c bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
@@ -17,25 +18,44 @@ $(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/bsched.c bsched/bs
 	@mkdir -p $(@D)
 	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ bsched/tests/test_bsched.c bsched/bsched.c -lcmocka
 
-# bsched.c must compile warning-free for the host and for the CPU32 target.
-.PHONY: check-bsched-build check-bsched-unit check-bsched-plan
+$(BUILD)/tests/test_bsched_fast: bsched/tests/test_bsched_fast.c bsched/fast/bsched_fast.c bsched/fast/bsched_fast.h \
+        bsched/bsched.c bsched/bsched.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/fast -DBSCHED_MAX_PROCS=4096 -o $@ \
+	    bsched/tests/test_bsched_fast.c bsched/fast/bsched_fast.c bsched/bsched.c -lcmocka
+
+# bsched.c (and bsched_fast.c) must compile warning-free for the host and for the CPU32 target.
+.PHONY: check-bsched-build check-bsched-unit check-bsched-fast check-bsched-plan
 check-bsched-build:
 	@$(SETUP) base m68k
 	@pass=0; fail=0; \
 	for cfg in "$(HOST_CC) $(HOST_CFLAGS)" "$(HOST_CC) $(HOST_CFLAGS) -DBSCHED_MAX_PROCS=65535" \
 	           "$(CROSS_CC) $(CROSS_CFLAGS)" "$(CROSS_CC) $(CROSS_CFLAGS) -DBSCHED_MAX_PROCS=65535"; do \
-	    if $$cfg -c -o /dev/null bsched/bsched.c; then pass=$$((pass+1)); echo "ok: $$cfg"; \
-	    else fail=$$((fail+1)); echo "FAILED: $$cfg"; fi; \
+	    for src in bsched/bsched.c bsched/fast/bsched_fast.c; do \
+	        if $$cfg -Ibsched -c -o /dev/null $$src; then pass=$$((pass+1)); echo "ok: $$cfg $$src"; \
+	        else fail=$$((fail+1)); echo "FAILED: $$cfg $$src"; fi; \
+	    done; \
 	done; \
 	$(call record,bsched-build,$$pass,$$fail)
 
-check-bsched-unit: $(BUILD)/tests/test_bsched
-	@$(SETUP) base
-	@out=$$($(BUILD)/tests/test_bsched 2>&1); rc=$$?; echo "$$out"; \
+# $(call cmocka_suite,SUITE,BINARY): runs a cmocka binary and records its counts.
+cmocka_suite = out=$$($(2) 2>&1); rc=$$?; echo "$$out"; \
 	p=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
 	f=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	$(call record,bsched-unit,$${p:-0},$${f:-0}); [ $$rc -eq 0 ]
+	$(call record,$(1),$${p:-0},$${f:-0}); [ $$rc -eq 0 ]
+
+check-bsched-unit: $(BUILD)/tests/test_bsched
+	@$(SETUP) base
+	@$(call cmocka_suite,bsched-unit,$(BUILD)/tests/test_bsched)
+
+# bsched_fast_step against Fig. 7's bsched_step on the same states (bsched/fast/).
+check-bsched-fast: $(BUILD)/tests/test_bsched_fast
+	@$(SETUP) base
+	@$(call cmocka_suite,bsched-fast,$(BUILD)/tests/test_bsched_fast)
 
 check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
+
+include bsched/bench/bench.mk
+include bsched/dist/dist.mk

@@ -1,8 +1,9 @@
 /*
  * bsched-plan: plans a priority set with bsched.c and prints the paper's
- * Tables 1 and 2 for it (or one JSON object with --json).
+ * Tables 1 and 2 for it (or one JSON object with --json), and with --svg FILE
+ * also draws the major cycle as an SVG chart into FILE.
  *
- *   bsched-plan [--json] PV [PV ...]
+ *   bsched-plan [--json] [--svg FILE] PV [PV ...]
  *
  * Exit status 0 on success, 2 on bad input (one line on stderr, nothing on stdout).
  */
@@ -16,6 +17,10 @@
 
 /* The major cycle has 2^maxpv minor cycles; listing it is capped here. */
 #define PLAN_MAX_LISTED_PV 20
+/* The chart draws at most this many minor cycles and process rows (the rest
+ * is left out, and the chart says so). */
+#define SVG_MAX_CYCLES 1024u
+#define SVG_MAX_ROWS   512u
 
 static struct bsched plan;
 static uint8_t pvs[BSCHED_MAX_PROCS];
@@ -23,7 +28,7 @@ static uint8_t pvs[BSCHED_MAX_PROCS];
 /* Bad input: one line on stderr naming the argument, exit status 2. */
 static int usage_error(const char *what, const char *arg)
 {
-    fprintf(stderr, "bsched-plan: %s '%s' (usage: bsched-plan [--json] PV [PV ...], "
+    fprintf(stderr, "bsched-plan: %s '%s' (usage: bsched-plan [--json] [--svg FILE] PV [PV ...], "
             "PV an integer 0..%d, at most %d processes)\n",
             what, arg, PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS);
     return 2;
@@ -116,9 +121,114 @@ static void print_json(void)
     printf("]}\n");
 }
 
+/* The major cycle as an SVG chart: minor cycles across, processes down (in
+ * execution order, named pK.J), a mark where a process runs, the load of each
+ * cycle as a bar under it with the `perfect` level drawn across. Every mark is
+ * <rect class="run" data-cycle="t" data-process="i">, every bar
+ * <rect class="load" data-cycle="t" data-load="n">, so tests can read them. */
+static int write_svg(FILE *out)
+{
+    uint32_t cycles = (uint32_t)1u << plan.maxpv;
+    uint32_t shown = cycles < SVG_MAX_CYCLES ? cycles : SVG_MAX_CYCLES;
+    uint32_t rows = plan.count < SVG_MAX_ROWS ? plan.count : SVG_MAX_ROWS;
+    uint32_t cw = 1600u / shown, rh = 1200u / rows;
+    uint32_t left = 70u, top = 50u, grid_w, grid_h, load_h = 120u, load_top, width, height;
+    uint32_t t, r;
+    char name[32];
+    static uint16_t row_of[BSCHED_MAX_PROCS];
+
+    cw = cw < 2u ? 2u : (cw > 24u ? 24u : cw);
+    rh = rh < 2u ? 2u : (rh > 18u ? 18u : rh);
+    grid_w = shown * cw;
+    grid_h = rows * rh;
+    load_top = top + grid_h + 30u;
+    width = left + grid_w + 150u;
+    height = load_top + load_h + 70u;
+    for (r = 0; r < plan.count; r++) {
+        row_of[plan.order[r]] = (uint16_t)r;
+    }
+    fprintf(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%lu\" height=\"%lu\" "
+            "viewBox=\"0 0 %lu %lu\" font-family=\"sans-serif\" font-size=\"11\">\n",
+            (unsigned long)width, (unsigned long)height, (unsigned long)width, (unsigned long)height);
+    fprintf(out, "<style>.run{fill:#1f5fa8}.load{fill:#7a9cc6}.load.perfect{fill:#d0702a}"
+            ".grid{stroke:#ddd;stroke-width:1}.perfect-line{stroke:#d0702a;stroke-dasharray:4 3}</style>\n");
+    fprintf(out, "<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n");
+    fprintf(out, "<text x=\"%lu\" y=\"20\" font-size=\"14\">major cycle of %lu minor cycles, "
+            "%u processes, perfect = %u, U = %.6g</text>\n", (unsigned long)left,
+            (unsigned long)cycles, (unsigned)plan.count, (unsigned)plan.perfect, utilisation());
+    if (shown < cycles || rows < plan.count) {
+        fprintf(out, "<text class=\"left-out\" x=\"%lu\" y=\"38\" fill=\"#b00\">left out:", (unsigned long)left);
+        if (shown < cycles) {
+            fprintf(out, " minor cycles %lu..%lu (%lu of %lu shown)", (unsigned long)shown,
+                    (unsigned long)(cycles - 1u), (unsigned long)shown, (unsigned long)cycles);
+        }
+        if (rows < plan.count) {
+            fprintf(out, "%s rows of %u processes after the first %lu in execution order (counted in the loads)",
+                    shown < cycles ? ";" : "", (unsigned)(plan.count - rows), (unsigned long)rows);
+        }
+        fprintf(out, "</text>\n");
+    }
+    /* Row labels and guide lines. */
+    for (r = 0; r < rows; r++) {
+        if (rh >= 9u) {
+            process_name(name, sizeof name, plan.order[r]);
+            fprintf(out, "<text x=\"%lu\" y=\"%lu\" text-anchor=\"end\">%s</text>\n",
+                    (unsigned long)(left - 6u), (unsigned long)(top + r * rh + rh - 3u), name);
+        }
+    }
+    for (t = 0; t <= shown; t += (shown / 16u ? shown / 16u : 1u)) {
+        fprintf(out, "<line class=\"grid\" x1=\"%lu\" y1=\"%lu\" x2=\"%lu\" y2=\"%lu\"/>",
+                (unsigned long)(left + t * cw), (unsigned long)top, (unsigned long)(left + t * cw),
+                (unsigned long)(load_top + load_h));
+        if (t < shown) {
+            fprintf(out, "<text x=\"%lu\" y=\"%lu\">%lu</text>", (unsigned long)(left + t * cw),
+                    (unsigned long)(top - 4u), (unsigned long)t);
+        }
+        fprintf(out, "\n");
+    }
+    /* Marks and loads, cycle by cycle. */
+    for (t = 0; t < shown; t++) {
+        int32_t n = bsched_step(&plan);
+        int32_t k;
+        uint32_t bar;
+        for (k = 0; k < n; k++) {
+            uint16_t i = plan.ran[k];
+            if (row_of[i] < rows) {
+                fprintf(out, "<rect class=\"run\" data-cycle=\"%lu\" data-process=\"%u\" x=\"%lu\" "
+                        "y=\"%lu\" width=\"%lu\" height=\"%lu\"/>\n", (unsigned long)t, (unsigned)i,
+                        (unsigned long)(left + t * cw), (unsigned long)(top + row_of[i] * rh),
+                        (unsigned long)(cw > 2u ? cw - 1u : cw), (unsigned long)(rh > 2u ? rh - 1u : rh));
+            }
+        }
+        bar = (uint32_t)((uint64_t)load_h * (uint32_t)n / plan.perfect);
+        fprintf(out, "<rect class=\"load%s\" data-cycle=\"%lu\" data-load=\"%ld\" x=\"%lu\" y=\"%lu\" "
+                "width=\"%lu\" height=\"%lu\"/>\n", (uint32_t)n == plan.perfect ? " perfect" : "",
+                (unsigned long)t, (long)n, (unsigned long)(left + t * cw),
+                (unsigned long)(load_top + load_h - bar), (unsigned long)(cw > 2u ? cw - 1u : cw),
+                (unsigned long)bar);
+        if (cw >= 14u) {
+            fprintf(out, "<text x=\"%lu\" y=\"%lu\" font-size=\"9\">%ld</text>\n",
+                    (unsigned long)(left + t * cw + 2u), (unsigned long)(load_top + load_h + 12u), (long)n);
+        }
+    }
+    fprintf(out, "<line class=\"perfect-line\" x1=\"%lu\" y1=\"%lu\" x2=\"%lu\" y2=\"%lu\"/>\n"
+            "<text class=\"perfect-label\" x=\"%lu\" y=\"%lu\" fill=\"#d0702a\">perfect = %u</text>\n",
+            (unsigned long)left, (unsigned long)load_top, (unsigned long)(left + grid_w),
+            (unsigned long)load_top, (unsigned long)(left + grid_w + 6u), (unsigned long)(load_top + 4u),
+            (unsigned)plan.perfect);
+    fprintf(out, "<text x=\"%lu\" y=\"%lu\" text-anchor=\"end\">load</text>\n",
+            (unsigned long)(left - 6u), (unsigned long)(load_top + load_h));
+    fprintf(out, "<text x=\"%lu\" y=\"%lu\">minor cycle &#8594;  (bars: processes run per cycle; "
+            "orange = perfect)</text>\n", (unsigned long)left, (unsigned long)(load_top + load_h + 40u));
+    fprintf(out, "</svg>\n");
+    return ferror(out) ? -1 : 0;
+}
+
 int main(int argc, char **argv)
 {
     int json = 0;
+    const char *svg = NULL;
     size_t count = 0;
     int a;
     int32_t rc;
@@ -131,6 +241,13 @@ int main(int argc, char **argv)
         long value;
         if (!options_done && strcmp(arg, "--json") == 0) {
             json = 1;
+            continue;
+        }
+        if (!options_done && strcmp(arg, "--svg") == 0) {
+            if (a + 1 >= argc || argv[a + 1][0] == '\0') {
+                return usage_error("--svg needs a file name", arg);
+            }
+            svg = argv[++a];
             continue;
         }
         if (!options_done && strcmp(arg, "--") == 0) {
@@ -171,6 +288,28 @@ int main(int argc, char **argv)
     if (rc != BSCHED_OK) {
         fprintf(stderr, "bsched-plan: bsched_init failed with code %ld\n", (long)rc);
         return 2;
+    }
+    if (svg != NULL) {
+        /* Written to a temporary name and renamed, so a failed run leaves no partial chart. */
+        char tmp[4096];
+        FILE *out;
+        int failed;
+        if (snprintf(tmp, sizeof tmp, "%s.tmp", svg) >= (int)sizeof tmp) {
+            return usage_error("--svg file name too long:", svg);
+        }
+        out = fopen(tmp, "w");
+        if (out == NULL) {
+            fprintf(stderr, "bsched-plan: cannot write '%s': %s\n", svg, strerror(errno));
+            return 2;
+        }
+        failed = write_svg(out);
+        failed |= fclose(out) != 0;
+        if (failed || rename(tmp, svg) != 0) {
+            fprintf(stderr, "bsched-plan: cannot write '%s': %s\n", svg, strerror(errno));
+            remove(tmp);
+            return 2;
+        }
+        (void)bsched_init(&plan, pvs, count); /* back to cycle 0 for the listing */
     }
     if (json) {
         print_json();

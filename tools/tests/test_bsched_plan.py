@@ -101,3 +101,97 @@ def test_largest_listed_pv_and_capacity():
     assert r.returncode == 0
     doc = json.loads(r.stdout)
     assert doc["perfect"] == 65535 and len(doc["major_cycle"][0]) == 65535
+
+
+# ---------- --svg FILE: the major cycle as a chart ----------
+
+import xml.etree.ElementTree as ET
+
+SVG_NS = "{http://www.w3.org/2000/svg}"
+
+
+def svg_of(tmp_path, *pvs, extra=()):
+    out = tmp_path / "plan.svg"
+    r = run("--svg", str(out), *extra, *pvs)
+    assert r.returncode == 0, r.stderr
+    root = ET.parse(out).getroot()  # well-formed XML, or this raises
+    assert root.tag == SVG_NS + "svg"
+    return root, r
+
+
+def marks(root):
+    runs = {}
+    for rect in root.iter(SVG_NS + "rect"):
+        if rect.get("class") == "run":
+            runs.setdefault(int(rect.get("data-cycle")), []).append(int(rect.get("data-process")))
+    return runs
+
+
+def loads(root):
+    return {int(r.get("data-cycle")): int(r.get("data-load")) for r in root.iter(SVG_NS + "rect")
+            if (r.get("class") or "").startswith("load")}
+
+
+def texts(root):
+    return ["".join(t.itertext()) for t in root.iter(SVG_NS + "text")]
+
+
+def test_svg_table2_marks_match_json(tmp_path):
+    root, r = svg_of(tmp_path, *TABLE1_PV, extra=("--json",))
+    doc = json.loads(r.stdout)  # --json still goes to stdout, unchanged
+    assert doc["major_cycle"] == TABLE2
+    got = marks(root)
+    assert [got.get(t, []) for t in range(16)] == TABLE2  # in execution order, too
+    assert loads(root) == {t: len(TABLE2[t]) for t in range(16)}
+    assert any("perfect = 3" in t for t in texts(root))
+    # cycles at the perfect load are marked as such
+    perfect_bars = [r for r in root.iter(SVG_NS + "rect") if r.get("class") == "load perfect"]
+    assert sorted(int(r.get("data-cycle")) for r in perfect_bars) == [t for t in range(16) if len(TABLE2[t]) == 3]
+    assert not any(t.startswith("left out") for t in texts(root))
+    # processes are labelled like the paper, in execution order
+    labels = [t for t in texts(root) if t.startswith("p") and "." in t]
+    assert labels == ["p1.1", "p1.2", "p1.3", "p2.1", "p2.2", "p3.1", "p4.1", "p4.2", "p4.3"]
+
+
+def test_svg_larger_set_matches_json(tmp_path):
+    pvs = [str(3 + (i * 7) % 8) for i in range(300)]
+    root, _ = svg_of(tmp_path, *pvs)
+    doc = json.loads(run("--json", *pvs).stdout)
+    got = marks(root)
+    assert len(doc["major_cycle"]) == 1024
+    assert [got.get(t, []) for t in range(1024)] == doc["major_cycle"]
+    assert loads(root) == {t: len(c) for t, c in enumerate(doc["major_cycle"])}
+
+
+def test_svg_says_what_it_left_out(tmp_path):
+    pvs = ["11"] * 3 + ["2"] * 600
+    root, _ = svg_of(tmp_path, *pvs)
+    doc = json.loads(run("--json", *pvs).stdout)
+    left_out = [t for t in texts(root) if t.startswith("left out")]
+    assert len(left_out) == 1
+    assert "minor cycles 1024..2047 (1024 of 2048 shown)" in left_out[0]
+    assert "rows of 91 processes after the first 512" in left_out[0]
+    got = marks(root)
+    assert max(got) <= 1023
+    shown = set(doc["order"][:512])
+    for t in range(1024):
+        assert got.get(t, []) == [i for i in doc["major_cycle"][t] if i in shown]
+    # the loads still count every process
+    assert loads(root) == {t: len(doc["major_cycle"][t]) for t in range(1024)}
+
+
+@pytest.mark.parametrize("args", [["--svg"], ["1", "2", "--svg"], ["--svg", ""]])
+def test_svg_without_file_is_an_error(args):
+    r = run(*args)
+    assert r.returncode == 2
+    assert r.stdout == ""
+    assert "--svg" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_svg_unwritable_file_is_an_error_and_writes_nothing(tmp_path):
+    target = tmp_path / "no-such-dir" / "plan.svg"
+    r = run("--svg", str(target), "1", "2")
+    assert r.returncode == 2
+    assert r.stdout == ""
+    assert "cannot write" in r.stderr
+    assert not target.exists()

@@ -1,0 +1,60 @@
+# The certified core as a drop-in bundle (issue 14).
+#   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, the WP and CBMC
+#                    proof jobs, unit tests, a README for embedders and a standalone
+#                    Makefile (bsched/dist/Makefile) whose make prove / make cbmc run
+#                    in the unpacked folder without this repository
+#   make distcheck   unpacks it in a temporary folder and runs its make test, make
+#                    prove and make cbmc there (long: the full proofs; not in make check)
+#   make check-dist  suite `dist`: the bundle unpacks and builds warning-free, its unit
+#                    tests pass and its CBMC `errors` harness passes (about a minute)
+
+DIST_VERSION := $(shell cat bsched/VERSION)
+DIST_NAME    := bsched-$(DIST_VERSION)
+DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
+# Repository paths, kept as they are inside the bundle (so the proof jobs' own
+# Makefiles run unchanged there).
+DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
+    bsched/fast/bsched_fast.c bsched/fast/bsched_fast.h \
+    bsched/tests/test_bsched.c bsched/tests/test_bsched_fast.c bsched/proofs/README.md \
+    $(filter-out %.pyc,$(shell find bsched/proofs/wp bsched/proofs/cbmc -type f -not -path '*/__pycache__/*'))
+
+CHECKS += dist
+.PHONY: dist distcheck check-dist
+
+$(DIST_TAR): $(DIST_FILES) bsched/dist/Makefile bsched/dist/setup.sh bsched/dist/README.md
+	@rm -rf $(BUILD)/dist/$(DIST_NAME) && mkdir -p $(BUILD)/dist/$(DIST_NAME)
+	@tar -cf - $(DIST_FILES) | tar -xf - -C $(BUILD)/dist/$(DIST_NAME)
+	@cp bsched/dist/Makefile bsched/dist/setup.sh $(BUILD)/dist/$(DIST_NAME)/
+	@sed 's/VERSION/$(DIST_VERSION)/' bsched/dist/README.md > $(BUILD)/dist/$(DIST_NAME)/README.md
+	@tar -czf $@ --owner=0 --group=0 --sort=name -C $(BUILD)/dist $(DIST_NAME)
+	@rm -rf $(BUILD)/dist/$(DIST_NAME)
+	@echo "dist: $@ ($$(tar -tzf $@ | grep -vc '/$$') files, $$(stat -c %s $@) bytes)"
+
+dist: $(DIST_TAR)
+
+# $(call dist_unpack,DIR): a fresh copy of the bundle in DIR/$(DIST_NAME)
+dist_unpack = rm -rf $(1) && mkdir -p $(1) && tar -xzf $(DIST_TAR) -C $(1)
+
+distcheck: $(DIST_TAR)
+	@$(SETUP) base frama-c cbmc
+	@dir=$$(mktemp -d /tmp/bsched-distcheck.XXXXXX); tar -xzf $(DIST_TAR) -C $$dir; \
+	cd $$dir/$(DIST_NAME) && start=$$(date +%s) && \
+	$(MAKE) --no-print-directory test > test.log 2>&1 && echo "distcheck: unit tests passed" && \
+	$(MAKE) --no-print-directory prove > prove.log 2>&1; rc=$$?; tail -4 prove.log; \
+	echo "distcheck: make prove exited $$rc after $$(( $$(date +%s) - start )) s"; \
+	t=$$(date +%s); $(MAKE) --no-print-directory cbmc > cbmc.log 2>&1; rc2=$$?; tail -3 cbmc.log; \
+	echo "distcheck: make cbmc exited $$rc2 after $$(( $$(date +%s) - t )) s (in $$dir/$(DIST_NAME))"; \
+	[ $$rc -eq 0 ] && [ $$rc2 -eq 0 ] && rm -rf $$dir
+
+check-dist: $(DIST_TAR)
+	@$(SETUP) base cbmc
+	@dir=$(BUILD)/dist/check; $(call dist_unpack,$$dir); cd $$dir/$(DIST_NAME); pass=0; fail=0; \
+	if $(MAKE) --no-print-directory all > all.log 2>&1; then pass=$$((pass+1)); echo "ok: the bundle builds warning-free"; \
+	else fail=$$((fail+1)); echo "FAILED: the bundle does not build"; tail -20 all.log; fi; \
+	if $(MAKE) --no-print-directory test > test.log 2>&1 && [ $$(grep -c '^\[  PASSED  \]' test.log) -eq 2 ]; then \
+	    pass=$$((pass+1)); echo "ok: its unit tests pass ($$(grep -h '^\[==========\] [0-9]* test(s) run' test.log | awk '{s+=$$2} END {print s}') tests)"; \
+	else fail=$$((fail+1)); echo "FAILED: its unit tests"; tail -20 test.log; fi; \
+	if $(MAKE) --no-print-directory cbmc-run-errors > cbmc.log 2>&1 && grep -q '^PASS' build/cbmc/errors/result.txt; then \
+	    pass=$$((pass+1)); echo "ok: its CBMC errors harness passes"; \
+	else fail=$$((fail+1)); echo "FAILED: its CBMC errors harness"; tail -20 cbmc.log; fi; \
+	cd $(ROOT); $(call record,dist,$$pass,$$fail); echo "dist: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]
