@@ -351,6 +351,10 @@ def stage_unit(work, m):
     return False, ''
 
 
+# CBMC and WP runs take the machine's shared lock, unless the caller holds it
+# already for the whole proof stage (MUTANTS_LOCKED=1: one wait, not one per run).
+LOCK = [] if os.environ.get('MUTANTS_LOCKED') else ['flock', '/tmp/bsched-heavy.lock']
+
 # Small bounds: each run takes seconds, and all harness properties are checked.
 CBMC_RUNS = [
     ('errors', {'N': '4'}),
@@ -368,7 +372,7 @@ def stage_cbmc(work, m):
         args = ['make', '--no-print-directory', '-C', hdir, 'OUT=' + out,
                 'SOURCES=%s/%s_harness.c %s' % (hdir, harness, path)] + \
                ['%s=%s' % kv for kv in bounds.items()]
-        r = subprocess.run(['flock', '/tmp/bsched-heavy.lock'] + args, capture_output=True, text=True)
+        r = subprocess.run(LOCK + args, capture_output=True, text=True)
         res = ''
         try:
             res = open(os.path.join(out, 'result.txt')).read().strip()
@@ -393,7 +397,7 @@ def wp_flags():
 def stage_wp(work, m):
     d, path = write_mutant(work, m)
     log = os.path.join(d, 'wp.log')
-    cmd = 'flock /tmp/bsched-heavy.lock frama-c %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (
+    cmd = ' '.join(LOCK) + ' frama-c %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (
         wp_flags(), m['func'], path, log)
     tools = os.environ.get('BSCHED_TOOLS') or os.path.join(
         os.environ.get('XDG_CACHE_HOME') or os.path.expanduser('~/.cache'), 'bsched')
@@ -464,6 +468,14 @@ def main():
         for m, by, why in ex.map(first, muts):
             results[m['key']] = (m, by, why)
     timing = {'unit': time.time() - t0}
+    global LOCK
+    if LOCK and any(r[1] is None for r in results.values()) and ('cbmc' in stages or 'wp' in stages):
+        import fcntl
+        lock = open('/tmp/bsched-heavy.lock', 'a')
+        t1 = time.time()
+        fcntl.flock(lock, fcntl.LOCK_EX)   # held until exit: one wait for all proof runs
+        timing['lock wait'] = time.time() - t1
+        LOCK = []
     for st, fn in (('cbmc', stage_cbmc), ('wp', stage_wp)):
         if st not in stages:
             continue

@@ -8,7 +8,12 @@
  *   zeroed struct;
  * - an out-of-range pv is found in every position, the first included;
  * - bsched_init clears ran_count; bsched_step advances cycle modulo 2^maxpv;
- * - bsched_run_cycle calls the body when exactly one process is due.
+ * - bsched_run_cycle calls the body when exactly one process is due;
+ * - the cap of Fig. 7 (at most `perfect` processes per cycle) holds even from
+ *   a state whose perfect was lowered (outside the contract: bsched_init never
+ *   leaves such a state, the balance theorem says the cap never binds): the
+ *   deferred processes keep wait 0, no wait wraps, and bsched_due writes no
+ *   more than `perfect` entries.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -167,6 +172,32 @@ static void test_run_cycle_one_due_process(void **state)
     assert_int_equal(log[0], 0);
 }
 
+static void test_cap_holds_when_perfect_is_too_small(void **state)
+{
+    static struct bsched s;
+    uint16_t due[1];
+    uint16_t log[4];
+    uint32_t i;
+    (void)state;
+    plan_table1(&s);  /* cycle 0 runs p1.1 p1.3 p3.1 (inputs 0, 2, 5) */
+    s.perfect = 1;    /* forged: room for one process per cycle */
+    assert_int_equal(bsched_due(&s, 0, due), 1); /* due[] has exactly perfect entries */
+    assert_int_equal(due[0], 0);
+    log[0] = 0;
+    assert_int_equal(bsched_run_cycle(&s, record_call, log), 1);
+    assert_int_equal(log[0], 1);
+    assert_int_equal(log[1], 0);
+    assert_int_equal(s.ran_count, 1);
+    /* The two deferred processes still wait 0 (not wrapped below 0); the one
+     * that ran restarted its period of 2 and counted down once. */
+    assert_int_equal(s.wait[2], 0);
+    assert_int_equal(s.wait[5], 0);
+    assert_int_equal(s.wait[0], 1);
+    for (i = 0; i < s.count; i++) {
+        assert_true(s.wait[i] < (1u << s.pv[i]));
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -176,6 +207,7 @@ int main(void)
         cmocka_unit_test(test_init_clears_ran_count_and_cycle),
         cmocka_unit_test(test_cycle_counts_modulo_major_cycle),
         cmocka_unit_test(test_run_cycle_one_due_process),
+        cmocka_unit_test(test_cap_holds_when_perfect_is_too_small),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
