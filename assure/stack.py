@@ -286,10 +286,16 @@ def main():
         if g.recursive:
             print('   FAILED: recursion, no bound: %s' % '; '.join(sorted(g.recursive)))
             bad += 1
+        else:
+            print('   ok: no recursion on any path (the bound exists)')
+            ok += 1
         dyn = sorted(f for f in g.dynamic if f in g.memo)
         if dyn:
             print('   FAILED: unbounded dynamic frames: %s' % ', '.join(dyn))
             bad += 1
+        else:
+            print('   ok: every frame static or dynamic,bounded')
+            ok += 1
         big = sorted(((g.frames[f], f) for f in g.frames if ':' not in f and f in linked), reverse=True)[:8]
         print('   largest frames: %s' % ', '.join('%s %d' % (f, n) for n, f in big))
         if g.unknown:

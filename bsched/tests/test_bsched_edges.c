@@ -61,6 +61,15 @@ static void test_forged_states_rejected(void **state)
     bad.count = (uint16_t)(BSCHED_MAX_PROCS + 1); /* above capacity */
     expect_rejected(&bad);
 
+#if BSCHED_MAX_PROCS < 65534
+    bad = good;
+    bad.count = (uint16_t)(BSCHED_MAX_PROCS + 2); /* further above: not just the first value */
+    expect_rejected(&bad);
+    bad = good;
+    bad.count = 65535;
+    expect_rejected(&bad);
+#endif
+
     bad = good;
     bad.maxpv = BSCHED_MAX_PV + 1; /* a period the library cannot hold */
     expect_rejected(&bad);
