@@ -63,11 +63,11 @@ def parse_ci(paths):
             frames[plain] = max(frames.get(plain, 0), frames[title])
             if title in dynamic:
                 dynamic.add(plain)
-    for src in list(edges):
-        targets = {t.rsplit(':', 1)[1] if ':' in t else t for t in edges[src]}
+    plain_edges = {}
+    for src, targets in edges.items():
         plain = src.rsplit(':', 1)[1] if ':' in src else src
-        edges.setdefault(plain, set()).update(targets)
-    return frames, edges, dynamic
+        plain_edges.setdefault(plain, set()).update(t.rsplit(':', 1)[1] if ':' in t else t for t in targets)
+    return frames, plain_edges, dynamic
 
 
 def address_taken(objs, edges):
@@ -162,17 +162,21 @@ def find_threads(sources, defs, linked):
 
 
 def load_indirect(path):
-    table = {}
+    """`caller | f g`: f, g and every unclassified callback; `caller = f g`: only f, g."""
+    table, closed = {}, set()
     for line in open(path):
-        if line.startswith('#') or '|' not in line:
+        m = re.match(r'\s*([\w@]+)\s*([|=])(.*)$', line)
+        if not m or line.startswith('#'):
             continue
-        caller, targets = line.split('|', 1)
-        table[caller.strip()] = set(targets.split())
-    return table
+        table[m.group(1)] = set(m.group(3).split())
+        if m.group(2) == '=':
+            closed.add(m.group(1))
+    return table, closed
 
 
 class Graph:
-    def __init__(self, frames, edges, dynamic, taken, entries, table):
+    def __init__(self, frames, edges, dynamic, taken, entries, tables):
+        table, closed = tables
         self.frames, self.edges, self.dynamic = frames, edges, dynamic
         self.indirect = sorted(f for f in taken if f in frames and f not in entries)
         # caller@ancestor: the targets when the call chain passed through ancestor
@@ -180,7 +184,8 @@ class Graph:
         self.contexts = {k.split('@', 1)[1] for k in table if '@' in k}
         classified = set().union(*table.values()) if table else set()
         unclassified = [f for f in self.indirect if f not in classified]
-        self.targets = {c: sorted(set(unclassified) | (t & set(self.indirect))) for c, t in table.items()}
+        self.targets = {c: sorted((set() if c in closed else set(unclassified)) | (t & set(self.indirect)))
+                        for c, t in table.items()}
         self.default_targets = unclassified
         self.memo, self.unknown, self.recursive = {}, set(), set()
 
@@ -224,10 +229,12 @@ def main():
     ap.add_argument('--build', required=True, help='the firmware build tree (BUILD/firmware)')
     ap.add_argument('--apps', required=True)
     ap.add_argument('--irq-nesting', type=int, default=IRQ_NESTING_DEFAULT)
+    ap.add_argument('--gate', choices=['thread', 'full'], default='thread',
+                    help='fail when the thread alone (thread) or with nested interrupts (full) can overflow')
     ap.add_argument('--suite')
     a = ap.parse_args()
     headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h'))
-    ok = bad = known = 0
+    ok = bad = known = at_risk = 0
     known_list = {}
     kp = os.path.join(ROOT, 'assure', 'stack-known.txt')
     if os.path.exists(kp):
@@ -266,14 +273,21 @@ def main():
         for name, entry, size, where in threads:
             d, path = g.depth(entry)
             tramp = ASM_FRAMES['k_arch_thread_trampoline'] + RET + g.frames.get('k_thread_start', 0) + RET
-            worst = tramp + d + a.irq_nesting * isr
+            own = tramp + d
+            worst = own + a.irq_nesting * isr
             avail = None if size is None else size - 4 * guard
+            gate = worst if a.gate == 'full' else own
             if avail is None:
                 verdict = 'FAILED (stack size not found)'
                 bad += 1
             elif worst <= avail:
                 verdict = 'ok, margin %d bytes (%d %%)' % (avail - worst, 100 * (avail - worst) // avail)
                 ok += 1
+            elif gate <= avail:
+                verdict = ('ok for its own calls (margin %d bytes); AT RISK with %d nested interrupts '
+                           '(over by %d bytes)' % (avail - own, a.irq_nesting, worst - avail))
+                ok += 1
+                at_risk += 1
             elif '%s %s' % (app, name) in known_list:
                 verdict = 'KNOWN FINDING (not counted): bound exceeds the stack by %d bytes' % (worst - avail)
                 known += 1
@@ -300,6 +314,9 @@ def main():
         print('   largest frames: %s' % ', '.join('%s %d' % (f, n) for n, f in big))
         if g.unknown:
             print('   no .ci (assumed %d bytes each, libgcc/asm): %s' % (LIBGCC_FRAME, ', '.join(sorted(g.unknown))))
+    if at_risk:
+        print('%d threads fit their own calls but not the conservative interrupt bound (AT RISK, '
+              'reported; --gate full fails on them)' % at_risk)
     if known:
         print('%d threads over their stack by the conservative bound, listed in assure/stack-known.txt' % known)
     print('%d passed, %d failed' % (ok, bad))
