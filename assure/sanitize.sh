@@ -9,6 +9,9 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 out=$1; cflags=$2; suites=$3; result=$4
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# Warnings are the plain build's gate; GCC 12 reports extra -Wconversion warnings on code
+# that UBSan instruments (shifts), so -Werror would fail builds for no run-time reason.
+cflags=$(echo " $cflags " | sed 's/ -Werror / /g')
 mkdir -p "$out" "$(dirname "$result")"
 pass=0; fail=0; known=0
 for s in $suites; do
