@@ -313,19 +313,75 @@ def write_mutant(work, m):
     return d, path
 
 
-TESTS = sorted(os.path.join(ROOT, 'bsched/tests', f) for f in os.listdir(os.path.join(ROOT, 'bsched/tests'))
-               if f.startswith('test_') and f.endswith('.c'))
+def test_programs():
+    """Every bsched/tests/test_*.c (each a cmocka program), with the sources it needs
+    besides bsched.c: for each header it includes that lives under bsched/ (bsched.h
+    aside), that header's directory (-I) and the .c file of the same name beside it.
+    A program that does not build or pass against the original bsched.c is left out
+    (and said so)."""
+    tdir = os.path.join(ROOT, 'bsched', 'tests')
+    headers = {}
+    for d, _, files in os.walk(os.path.join(ROOT, 'bsched')):
+        for f in files:
+            if f.endswith('.h'):
+                headers.setdefault(f, d)
+    progs = []
+    for f in sorted(os.listdir(tdir)):
+        if not (f.startswith('test_') and f.endswith('.c')):
+            continue
+        path = os.path.join(tdir, f)
+        incs, extra = [], []
+        for h in re.findall(r'#include\s+"([^"]+)"', open(path).read()):
+            base = os.path.basename(h)
+            if base == 'bsched.h' or base not in headers:
+                continue
+            d = headers[base]
+            incs.append('-I' + d)
+            c = os.path.join(d, base[:-2] + '.c')
+            if os.path.exists(c) and os.path.abspath(c) != SRC:
+                extra.append(c)
+        progs.append((f[:-2], path, incs, extra))
+    return progs
+
+
+def build_test(prog, bsched_c, exe):
+    name, path, incs, extra = prog
+    cmd = [HOST_CC, '-std=c99', '-O1', '-g', '-w', '-Werror=return-type',
+           '-Werror=implicit-function-declaration', '-I' + os.path.join(ROOT, 'bsched')] + incs + \
+          ['-DBSCHED_MAX_PROCS=4096'] + SAN_FLAGS + ['-o', exe, path] + extra + [bsched_c, '-lcmocka']
+    return subprocess.run(cmd, capture_output=True, text=True)
+
+
+TESTS = []
+
+
+def baseline(work):
+    """The test programs that build and pass on the original bsched.c."""
+    d = os.path.join(work, 'original')
+    os.makedirs(d, exist_ok=True)
+    env = dict(os.environ, ASAN_OPTIONS='detect_leaks=0')
+    for prog in test_programs():
+        exe = os.path.join(d, prog[0])
+        r = build_test(prog, SRC, exe)
+        if r.returncode != 0:
+            print('mutants: left out %s: does not build against the original (%s)' % (prog[0], r.stderr[-200:]))
+            continue
+        try:
+            ok = subprocess.run([exe], capture_output=True, env=env, timeout=UNIT_TIMEOUT).returncode == 0
+        except subprocess.TimeoutExpired:
+            ok = False
+        if not ok:
+            print('mutants: left out %s: fails on the original bsched.c' % prog[0])
+            continue
+        TESTS.append(prog)
+    print('mutants: unit stage runs %s' % ', '.join(p[0] for p in TESTS))
 
 
 def stage_compile(work, m):
-    """Builds every bsched/tests/test_*.c (each a cmocka program) against the mutant."""
+    """Builds every test program against the mutant."""
     d, path = write_mutant(work, m)
-    for t in TESTS:
-        exe = os.path.join(d, os.path.basename(t)[:-2])
-        cmd = [HOST_CC, '-std=c99', '-O1', '-g', '-w', '-Werror=return-type',
-               '-Werror=implicit-function-declaration', '-I' + os.path.join(ROOT, 'bsched'),
-               '-DBSCHED_MAX_PROCS=4096'] + SAN_FLAGS + ['-o', exe, t, path, '-lcmocka']
-        r = subprocess.run(cmd, capture_output=True, text=True)
+    for prog in TESTS:
+        r = build_test(prog, path, os.path.join(d, prog[0]))
         if r.returncode != 0:
             return False, r.stderr[-400:]
     return True, ''
@@ -334,8 +390,8 @@ def stage_compile(work, m):
 def stage_unit(work, m):
     d = os.path.join(work, m['hash'])
     env = dict(os.environ, ASAN_OPTIONS='detect_leaks=0', UBSAN_OPTIONS='halt_on_error=1')
-    for t in TESTS:
-        name = os.path.basename(t)[:-2]
+    for prog in TESTS:
+        name = prog[0]
         try:
             r = subprocess.run([os.path.join(d, name)], capture_output=True, text=True,
                                timeout=UNIT_TIMEOUT, env=env)
@@ -452,6 +508,10 @@ def main():
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     t0 = time.time()
+    baseline(work)
+    if not TESTS:
+        print('mutants: no test program builds and passes on the original bsched.c')
+        return 1
     results = {}
 
     def first(m):
