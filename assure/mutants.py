@@ -481,7 +481,7 @@ def load_equivalent():
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument('cmd', choices=['list', 'run'])
+    ap.add_argument('cmd', choices=['list', 'run', 'tests'])
     ap.add_argument('--sample', type=int, default=0, help='only N mutants, a fixed sample by key hash')
     ap.add_argument('--stages', default='unit,cbmc,wp')
     ap.add_argument('--jobs', type=int, default=2)
@@ -490,6 +490,11 @@ def main():
     ap.add_argument('--only-survivors-of', metavar='REPORT',
                     help='re-run only the mutants a previous report lists as survivors')
     a = ap.parse_args()
+    if a.cmd == 'tests':   # the unit test programs and what they need (assure/bigendian.sh)
+        for name, path, incs, extra in test_programs():
+            print('%s|%s|%s|%s' % (name, os.path.relpath(path, ROOT), ' '.join(incs),
+                                   ' '.join(os.path.relpath(e, ROOT) for e in extra)))
+        return 0
     src = open(SRC).read()
     muts = generate(src)
     if a.cmd == 'list':
