@@ -10,6 +10,7 @@ cd "$(dirname "$0")/.."
 out=$1; cflags=$2; gate=$3; result=$4
 cflags=$(echo " $cflags " | sed 's/ -Werror / /g')   # findings are collected, not fatal
 rm -rf "$out"; mkdir -p "$out" "$(dirname "$result")"
+for b in gcc clang; do mkdir -p "$out/$b"; [ -e build/venv ] && ln -sfn "$(readlink -f build/venv)" "$out/$b/venv"; done
 pass=0; fail=0
 
 # gcc -fanalyzer

@@ -10,6 +10,8 @@ cd "$(dirname "$0")/.."
 out=$1; cflags=$2; suites=$3; result=$4
 rc_opts=(--rc lcov_branch_coverage=1)
 rm -rf "$out"; mkdir -p "$out" "$(dirname "$result")"
+# Suites that run Python use $(BUILD)/venv: the same environment as the main build.
+[ -e build/venv ] && ln -sfn "$(readlink -f build/venv)" "$out/venv"
 pass=0; fail=0
 for s in $suites; do
     if ! make --no-print-directory BUILD="$out" HOST_CFLAGS="$cflags" "check-$s" > "$out/$s.log" 2>&1; then

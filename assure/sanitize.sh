@@ -13,6 +13,8 @@ san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-poin
 # that UBSan instruments (shifts), so -Werror would fail builds for no run-time reason.
 cflags=$(echo " $cflags " | sed 's/ -Werror / /g')
 mkdir -p "$out" "$(dirname "$result")"
+# Suites that run Python use $(BUILD)/venv: the same environment as the main build.
+[ -e build/venv ] && ln -sfn "$(readlink -f build/venv)" "$out/venv"
 pass=0; fail=0; known=0
 for s in $suites; do
     log=$out-$s.log
