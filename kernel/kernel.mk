@@ -15,7 +15,8 @@ K_CORE_SRCS  := kernel/k_struct.c kernel/k_sched.c kernel/k_sync.c kernel/k_mq.c
 K_HOST_LIB   := kernel/lib/kprintf.c
 K_HEADERS    := $(wildcard kernel/include/*.h) kernel/k_internal.h
 K_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
-                 -I$(ROOT)/kernel/tests/host/arch -I$(ROOT)/bsched
+                 -I$(ROOT)/kernel/tests/host/arch -I$(ROOT)/bsched \
+                 -DK_BSCHED_REPORTER_STACK_BYTES=16384u
 K_HOST_PORT  := kernel/tests/host/arch/k_arch_host.c
 K_HOST_TESTS := $(K_BUILD)/tests/test_k_struct $(K_BUILD)/tests/test_k_threads
 

@@ -44,7 +44,7 @@ struct k_bsched {
     volatile uint32_t stuck_reports; /* "still running" announcements */
     struct k_sem report_sem;
     struct k_thread reporter;
-    uint32_t reporter_stack[K_STACK_WORDS(768u)] __attribute__((aligned(4)));
+    uint32_t reporter_stack[K_STACK_WORDS(K_BSCHED_REPORTER_STACK_BYTES)] __attribute__((aligned(4)));
 };
 
 /* Starts the thread (and its reporter). s must be planned (bsched_init);

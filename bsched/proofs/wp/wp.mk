@@ -24,11 +24,13 @@ WP_DEFINES  ?=
 WP_FCT      ?=
 WP_OUT      ?= $(WP_DIR)
 WP_EXPECT_FAIL ?=
+# Extra Frama-C options, e.g. -machdep x86_32 (make prove-machdeps, assure/assure.mk).
+WP_MACHDEP_FLAGS ?=
 export WHY3CONFIG := $(BSCHED_TOOLS)/why3/why3.conf
 
 WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
-	-wp-verbose 1 -wp-cache none
+	-wp-verbose 1 -wp-cache none $(WP_MACHDEP_FLAGS)
 
 # The full run is split in two Frama-C processes: WP generates its goals in one
 # thread, so one process would leave a core idle much of the time. Part A takes the library's code behind bsched_init and bsched_step; part B

@@ -1,0 +1,146 @@
+# Assurance evidence (issue 15, ASSURANCE.md): mutation testing, MISRA C:2012,
+# static analysis, the portability matrix, sanitizers, coverage, worst-case stack
+# and load independence. Everything here is generic: it works on whatever C the
+# tree holds (every suite in HOST_UNIT_CHECKS, every image in apps/*).
+#
+#   make mutants           every mutant of bsched.c: unit tests, then CBMC, then WP (long)
+#   make misra             MISRA C:2012 on bsched/ (deviation list), counts for the other parts
+#   make analyze           gcc -fanalyzer and clang scan-build over every host build (make all)
+#   make coverage          branch coverage of every host suite, HTML in build/coverage/html
+#   make stack             worst-case stack of every firmware thread and the interrupt path
+#   make prove-machdeps    WP under x86_32, x86_64 and x86_16 (long)
+# Suites in make check: sanitize, bsched-edges, bsched-targets, bsched-bigendian, misra,
+# analyze, coverage, mutants-sample, stack, load-independence.
+
+ASSURE := $(BUILD)/assure
+ASSURE_PY := $(ROOT)/assure
+
+# The bsched host suites this stream adds or re-runs.
+HOST_UNIT_CHECKS += bsched-unit kernel-unit bsched-edges
+CHECKS += bsched-edges sanitize bsched-targets bsched-bigendian misra analyze coverage \
+          mutants-sample stack load-independence
+
+# ---------------------------------------------------------------- edge tests of bsched.c
+$(BUILD)/tests/test_bsched_edges: bsched/tests/test_bsched_edges.c bsched/bsched.c bsched/bsched.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ $< bsched/bsched.c -lcmocka
+ALL += $(BUILD)/tests/test_bsched_edges
+
+# A cmocka program's counts: $(call cmocka_counts,OUTPUT-VAR) sets p and f.
+cmocka_counts = p=$$(echo "$$$(1)" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	f=$$(echo "$$$(1)" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1)
+
+.PHONY: check-bsched-edges
+check-bsched-edges: $(BUILD)/tests/test_bsched_edges
+	@$(SETUP) base
+	@out=$$($< 2>&1); rc=$$?; echo "$$out"; $(call cmocka_counts,out); \
+	$(call record,bsched-edges,$${p:-0},$${f:-$$((rc != 0))}); [ $$rc -eq 0 ]
+
+# ---------------------------------------------------------------- sanitizers
+# Every host unit suite again, built with ASan+UBSan into its own BUILD tree.
+SAN_BUILD := $(ASSURE)/sanitize
+.PHONY: check-sanitize
+check-sanitize:
+	@$(SETUP) base
+	@$(ASSURE_PY)/sanitize.sh $(SAN_BUILD) "$(HOST_CFLAGS)" "$(sort $(HOST_UNIT_CHECKS))" $(RESULTS)/sanitize.txt
+
+# ---------------------------------------------------------------- portability matrix
+# bsched.c warning-free on every target and integer size, text size of each.
+.PHONY: check-bsched-targets bsched-targets
+bsched-targets check-bsched-targets:
+	@$(SETUP) base m68k assure
+	@$(ASSURE_PY)/targets.sh $(RESULTS)/bsched-targets.txt "$(HOST_CFLAGS)"
+
+# The unit tests on a big-endian target: s390x under qemu-user, with Debian's
+# s390x cmocka (ci/setup.d/assure.sh).
+.PHONY: check-bsched-bigendian
+check-bsched-bigendian:
+	@$(SETUP) base assure
+	@$(ASSURE_PY)/bigendian.sh $(ASSURE)/s390x $(RESULTS)/bsched-bigendian.txt
+
+# ---------------------------------------------------------------- MISRA C:2012
+MISRA_INCLUDES := -I bsched -I kernel/include -I kernel -I kernel/arch/cpu32 -I .
+.PHONY: misra check-misra
+misra check-misra:
+	@$(SETUP) assure
+	@$(ASSURE_PY)/misra.py --deviations assure/misra-deviations.txt -I bsched --suite misra bsched; rc=$$?; \
+	echo "== other parts (counts only, no deviation list yet):"; \
+	for d in kernel drivers net pdl; do $(ASSURE_PY)/misra.py --count $(MISRA_INCLUDES) $$d; done; \
+	exit $$rc
+
+# ---------------------------------------------------------------- static analysis
+# Every host build (make all: the libraries, bsched-plan and every host test of
+# every part) under gcc -fanalyzer and clang's analyzer (scan-build). Findings in
+# bsched/, kernel/ and tools/ fail the suite; findings elsewhere are listed and
+# counted (their owners fix them).
+ANALYZE_GATE ?= bsched/ kernel/ tools/
+.PHONY: analyze check-analyze
+analyze check-analyze:
+	@$(SETUP) base assure
+	@$(ASSURE_PY)/analyze.sh "$(ASSURE)/analyze" "$(HOST_CFLAGS)" "$(ANALYZE_GATE)" $(RESULTS)/analyze.txt
+
+# ---------------------------------------------------------------- coverage
+# Every host unit suite built with --coverage into its own BUILD tree and run;
+# lcov branch coverage per part, HTML report. bsched.c must reach 100 % of its
+# lines and branches (the host suites of bsched.c: bsched-unit and bsched-edges).
+COV_BUILD := $(ASSURE)/coverage
+.PHONY: coverage check-coverage
+coverage check-coverage:
+	@$(SETUP) base assure
+	@$(ASSURE_PY)/coverage.sh "$(COV_BUILD)" "$(filter-out -O2,$(HOST_CFLAGS)) -O0 --coverage" \
+	    "$(sort $(HOST_UNIT_CHECKS))" $(RESULTS)/coverage.txt
+
+# ---------------------------------------------------------------- mutation testing
+.PHONY: mutants check-mutants-sample
+mutants:
+	@$(SETUP) base cbmc frama-c
+	@$(ASSURE_PY)/mutants.py run --stages unit,cbmc,wp --out $(BUILD)/mutants
+# make check: 24 mutants (a fixed sample by key hash), unit tests only; each must be
+# killed or listed as equivalent in assure/mutants-equivalent.txt.
+check-mutants-sample:
+	@$(SETUP) base
+	@$(ASSURE_PY)/mutants.py run --sample 24 --stages unit --jobs 2 --out $(BUILD)/mutants \
+	    --suite mutants-sample
+
+# ---------------------------------------------------------------- worst-case stack
+# Every image in apps/* rebuilt with -fstack-usage -fcallgraph-info=su into its
+# own BUILD tree; assure/stack.py walks the call graph from each thread's entry
+# and from the interrupt entry and compares with the stack each thread is given.
+ifdef FW_STACK_INFO
+FW_CFLAGS += -fstack-usage -fcallgraph-info=su
+endif
+STACK_BUILD := $(ASSURE)/stack
+# Interrupt levels that can nest on one thread stack (PIT and DUART on the reference board).
+STACK_IRQ_NESTING ?= 2
+# thread: a thread must fit its own deepest call chain (the interrupt-inclusive bound is
+# reported); full: it must also fit STACK_IRQ_NESTING interrupt paths on top.
+STACK_GATE ?= thread
+.PHONY: stack check-stack
+stack check-stack:
+	@$(SETUP) base m68k
+	@mkdir -p $(ASSURE) && $(MAKE) --no-print-directory BUILD=$(STACK_BUILD) FW_STACK_INFO=1 firmware-all > $(STACK_BUILD).log 2>&1 || \
+	    { tail -20 $(STACK_BUILD).log; $(call record,stack,0,1); exit 1; }
+	@$(ASSURE_PY)/stack.py --build $(STACK_BUILD)/firmware --apps "$(APPS)" --irq-nesting $(STACK_IRQ_NESTING) --gate $(STACK_GATE) --suite stack
+
+# ---------------------------------------------------------------- load independence
+# table1 twice on the emulator: alone, and with every core busy; the console
+# output must be identical, tick for tick.
+.PHONY: check-load-independence
+check-load-independence:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=table1
+	@$(ASSURE_PY)/load_independence.py --qemu $(QEMU_M68K) --elf $(call app_elf,table1) \
+	    --icount $(FW_ICOUNT) --until 'table1 done at tick' --suite load-independence
+
+# ---------------------------------------------------------------- WP machine models
+# The full WP run once per machine model, each gated like make prove.
+WP_MACHDEPS ?= x86_64 x86_32 x86_16
+.PHONY: prove-machdeps
+prove-machdeps:
+	@$(SETUP) frama-c
+	@rc=0; for m in $(WP_MACHDEPS); do \
+	    echo "== WP, -machdep $$m"; \
+	    flock /tmp/bsched-heavy.lock $(MAKE) --no-print-directory prove WP_OUT=$(BUILD)/wp-$$m \
+	        WP_MACHDEP_FLAGS="-machdep $$m" > $(BUILD)/wp-$$m.log 2>&1; r=$$?; \
+	    tail -4 $(BUILD)/wp-$$m.log; [ $$r -eq 0 ] || rc=1; \
+	done; exit $$rc
