@@ -41,11 +41,11 @@ enum line_edit_result line_edit_feed(struct line_edit *e, unsigned char c, char 
 {
     int after_cr = e->after_cr;
     *echo_len = 0;
-    if (e->complete)
-        line_edit_reset(e);
     e->after_cr = (c == CH_CR);
     if (c == CH_LF && after_cr)
         return LINE_EDIT_MORE; /* second half of CR LF: that line already ended */
+    if (e->complete)
+        line_edit_reset(e);
     if (c == CH_CR || c == CH_LF) {
         int overflow = e->overflow;
         *echo_len = put_echo(echo, "\n");
