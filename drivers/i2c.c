@@ -1,0 +1,298 @@
+/*
+ * I2C bus service on the two PCF8584 controllers (see i2c.h): per-bus queue,
+ * interrupt handler that drives the state machine (i2c_fsm.c) and chains the
+ * queued transactions, and one service thread that enforces deadlines and
+ * retries a START while the bus reads busy.
+ *
+ * Locking: the queue and the state machine of a bus are touched by its
+ * interrupt handler and by threads; threads hold all interrupts masked
+ * (k_arch_irq_save) while they touch them, for a few dozen instructions.
+ */
+#include "drivers/i2c.h"
+
+#include "drivers/i2c_fsm.h"
+#include "kernel.h"
+
+#define I2C_A_BASE 0xFFE200u
+#define I2C_B_BASE 0xFFE000u
+
+/* Deadline of one transaction: 4 ms plus 200 us per byte (twice the 100 us a
+ * byte takes at 90 kHz). A bus that stays busy or a byte that never ends is
+ * detected within this time and the controller is reset. */
+#define I2C_DEADLINE_BASE_MS 4u
+#define I2C_DEADLINE_US_PER_BYTE 200u
+/* How long a blocking caller waits at most: the deadlines of a full queue of
+ * long transactions are far shorter; the service thread ends every
+ * transaction by its deadline, so this only matters if it is starved. */
+#define I2C_WAIT_MS 500u
+
+#define I2C_SERVICE_PRIO (K_PRIO_SERVICE_MIN + 1u)
+#define I2C_SERVICE_STACK 1024u
+
+struct i2c_bus {
+    struct i2c_fsm fsm;
+    struct i2c_xfer *head;     /* active transaction (on the wire or waiting for the bus) */
+    struct i2c_xfer *tail;
+    uint8_t ready;
+    uint8_t own_addr;
+    uint8_t vector;
+    uint8_t level;
+    struct i2c_stats stats;
+};
+
+static struct i2c_bus i2c_buses[I2C_BUS_COUNT] = {
+    { .fsm = { .base = (volatile uint8_t *)I2C_A_BASE }, .own_addr = 0x55u, .vector = 27u, .level = 3u },
+    { .fsm = { .base = (volatile uint8_t *)I2C_B_BASE }, .own_addr = 0x56u, .vector = 25u, .level = 1u },
+};
+
+static struct k_thread i2c_service_thread;
+K_STACK_DEFINE(i2c_service_stack, I2C_SERVICE_STACK);
+static struct k_sem i2c_service_wake;
+static uint8_t i2c_service_running;
+
+static k_ticks_t xfer_ticks(const struct i2c_xfer *x)
+{
+    uint32_t bytes = 1u + (uint32_t)x->wr_len + (x->rd_len ? 2u + (uint32_t)x->rd_len : 0u);
+    return k_ms_to_ticks(I2C_DEADLINE_BASE_MS + (bytes * I2C_DEADLINE_US_PER_BYTE + 999u) / 1000u);
+}
+
+static void controller_reset(struct i2c_bus *b)
+{
+    (void)i2c_fsm_reset(&b->fsm, b->own_addr, b->vector);
+    b->stats.resets++;
+}
+
+/* Tries to put the head on the wire (interrupts masked). */
+static void start_head(struct i2c_bus *b)
+{
+    struct i2c_xfer *x = b->head;
+    if (x == NULL || b->fsm.x != NULL)
+        return;
+    if (!x->started) {
+        x->started = 1;
+        x->deadline = k_ticks() + xfer_ticks(x);
+    }
+    (void)i2c_fsm_start(&b->fsm, x);   /* bus busy: the service thread retries */
+}
+
+/* Removes the ended head, starts the next one, reports the ended one.
+ * Interrupts masked (or in the bus's handler). */
+static void complete_head(struct i2c_bus *b)
+{
+    struct i2c_xfer *x = b->head;
+    b->head = x->next;
+    if (b->head == NULL)
+        b->tail = NULL;
+    x->next = NULL;
+    switch (x->status) {
+    case DRV_OK: b->stats.done++; break;
+    case DRV_ERR_ABSENT: b->stats.absent++; break;
+    case DRV_ERR_ARB: b->stats.arb++; break;
+    default: b->stats.timeouts++; break;
+    }
+    if (b->fsm.need_reset)
+        controller_reset(b);
+    start_head(b);
+    if (x->done != NULL)
+        x->done(x, x->arg);
+}
+
+static void i2c_isr(void *arg)
+{
+    struct i2c_bus *b = arg;
+    b->stats.interrupts++;
+    if (i2c_fsm_interrupt(&b->fsm) == I2C_FSM_DONE)
+        complete_head(b);
+}
+
+/* Ends the head with DRV_ERR_TIMEOUT and resets the controller (interrupts masked). */
+static void timeout_head(struct i2c_bus *b)
+{
+    if (i2c_fsm_abort(&b->fsm) == NULL)
+        b->head->status = DRV_ERR_TIMEOUT;   /* never got the bus */
+    b->fsm.need_reset = 1;
+    complete_head(b);
+}
+
+/* Deadlines and bus-free retries. Sleeps on i2c_service_wake while every
+ * queue is empty; otherwise until the nearest deadline, or one tick while a
+ * transaction waits for a busy bus. */
+static void *i2c_service(void *arg)
+{
+    (void)arg;
+    for (;;) {
+        k_ticks_t now = k_ticks(), wake = now + K_TICK_HZ;
+        int active = 0;
+        for (unsigned i = 0; i < I2C_BUS_COUNT; i++) {
+            struct i2c_bus *b = &i2c_buses[i];
+            uint32_t s = k_arch_irq_save();
+            if (b->head != NULL && (int32_t)(now - b->head->deadline) >= 0)
+                timeout_head(b);
+            if (b->head != NULL && b->fsm.x == NULL)
+                start_head(b);
+            if (b->head != NULL) {
+                k_ticks_t next = b->fsm.x == NULL ? now + 1u : b->head->deadline;
+                if ((int32_t)(next - wake) < 0)
+                    wake = next;
+                active = 1;
+            }
+            k_arch_irq_restore(s);
+        }
+        if (active)
+            (void)k_sleep_until(wake);
+        else
+            (void)k_sem_wait(&i2c_service_wake);
+    }
+    return NULL;
+}
+
+int i2c_init(unsigned bus)
+{
+    struct i2c_bus *b;
+    uint32_t s;
+    int rc;
+
+    if (bus >= I2C_BUS_COUNT)
+        return DRV_ERR_CHANNEL;
+    b = &i2c_buses[bus];
+    s = k_arch_irq_save();
+    if (!i2c_service_running) {
+        (void)k_sem_init(&i2c_service_wake, 0u, 1u);
+        i2c_service_running = 1;
+        k_arch_irq_restore(s);
+        if (k_thread_create(&i2c_service_thread, "i2c", i2c_service, NULL, i2c_service_stack,
+                            sizeof(i2c_service_stack), I2C_SERVICE_PRIO) != K_OK)
+            return DRV_ERR_STATE;
+        s = k_arch_irq_save();
+    }
+    while (b->head != NULL)
+        timeout_head(b);
+    rc = i2c_fsm_reset(&b->fsm, b->own_addr, b->vector);
+    b->stats.resets++;
+    k_arch_irq_restore(s);
+    if (rc != 0) {
+        b->ready = 0;
+        return DRV_ERR_ABSENT;
+    }
+    if (!b->ready && k_irq_register(b->vector, b->level, i2c_isr, b) != K_OK)
+        return DRV_ERR_STATE;
+    b->ready = 1;
+    return DRV_OK;
+}
+
+int i2c_submit(unsigned bus, struct i2c_xfer *x)
+{
+    struct i2c_bus *b;
+    uint32_t s;
+
+    if (bus >= I2C_BUS_COUNT)
+        return DRV_ERR_CHANNEL;
+    b = &i2c_buses[bus];
+    if (x == NULL || x->addr7 > 0x7Fu || x->wr_len > I2C_MAX_LEN || x->rd_len > I2C_MAX_LEN
+        || (x->wr_len > 0 && x->wr == NULL) || (x->rd_len > 0 && x->rd == NULL))
+        return DRV_ERR_PARAM;
+    if (!b->ready)
+        return DRV_ERR_STATE;
+    s = k_arch_irq_save();
+    if (x->status == I2C_PENDING && (x->next != NULL || b->tail == x || b->head == x)) {
+        k_arch_irq_restore(s);
+        return DRV_ERR_BUSY;
+    }
+    x->status = I2C_PENDING;
+    x->next = NULL;
+    x->started = 0;
+    if (b->tail != NULL) {
+        b->tail->next = x;
+        b->tail = x;
+    } else {
+        b->head = b->tail = x;
+        start_head(b);
+        (void)k_sem_post(&i2c_service_wake);   /* watch its deadline */
+    }
+    k_arch_irq_restore(s);
+    return DRV_OK;
+}
+
+/* Takes x out of bus's queue if it is still there (the caller gave up). */
+static void i2c_cancel(struct i2c_bus *b, struct i2c_xfer *x)
+{
+    uint32_t s = k_arch_irq_save();
+    if (x->status == I2C_PENDING) {
+        if (b->head == x) {
+            timeout_head(b);
+        } else {
+            struct i2c_xfer *p = b->head;
+            while (p != NULL && p->next != x)
+                p = p->next;
+            if (p != NULL) {
+                p->next = x->next;
+                if (b->tail == x)
+                    b->tail = p;
+                x->next = NULL;
+            }
+            x->status = DRV_ERR_TIMEOUT;
+        }
+    }
+    k_arch_irq_restore(s);
+}
+
+static void post_done(struct i2c_xfer *x, void *arg)
+{
+    (void)x;
+    (void)k_sem_post(arg);
+}
+
+int i2c_transfer(unsigned bus, uint8_t addr7, const uint8_t *wr, size_t wr_len,
+                 uint8_t *rd, size_t rd_len)
+{
+    struct k_sem done;
+    struct i2c_xfer x = {
+        .addr7 = addr7, .wr = wr, .wr_len = wr_len, .rd = rd, .rd_len = rd_len,
+        .done = post_done, .arg = &done,
+    };
+    int rc;
+
+    if (k_in_isr())
+        return DRV_ERR_STATE;
+    (void)k_sem_init(&done, 0u, 1u);
+    rc = i2c_submit(bus, &x);
+    if (rc != DRV_OK)
+        return rc;
+    if (k_sem_wait_ticks(&done, k_ms_to_ticks(I2C_WAIT_MS)) != K_OK)
+        i2c_cancel(&i2c_buses[bus], &x);
+    return x.status;
+}
+
+int i2c_probe(unsigned bus, uint8_t addr7)
+{
+    return i2c_transfer(bus, addr7, NULL, 0, NULL, 0);
+}
+
+int i2c_scan(unsigned bus, uint8_t *found, unsigned max)
+{
+    int n = 0;
+    for (uint8_t a = 0x08u; a <= 0x77u; a++) {
+        int rc = i2c_probe(bus, a);
+        if (rc == DRV_OK) {
+            if ((unsigned)n < max && found != NULL)
+                found[n] = a;
+            n++;
+        } else if (rc != DRV_ERR_ABSENT) {
+            return rc;
+        }
+    }
+    return n;
+}
+
+int i2c_get_stats(unsigned bus, struct i2c_stats *out)
+{
+    uint32_t s;
+    if (bus >= I2C_BUS_COUNT)
+        return DRV_ERR_CHANNEL;
+    if (out == NULL)
+        return DRV_ERR_PARAM;
+    s = k_arch_irq_save();
+    *out = i2c_buses[bus].stats;
+    k_arch_irq_restore(s);
+    return DRV_OK;
+}
