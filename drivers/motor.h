@@ -30,7 +30,7 @@
 #define MOTOR_DEFAULT_PERIOD_MS 10u     /* service period motor_init starts with */
 #define MOTOR_PERIOD_MS_MAX 1000u
 #define MOTOR_SPEED_MAX 10000000        /* |set-point| limit, counts/s (the model's max) */
-#define MOTOR_SERVICE_PRIO 26u          /* just below the B-scheduler thread */
+#define MOTOR_SERVICE_PRIO 28u          /* K_PRIO_SERVICE_MIN: above every application thread */
 
 /* Sets up the TPU channels (PWM at 0 %, QDEC at position 0), brakes all
  * three motors and starts the service thread at MOTOR_DEFAULT_PERIOD_MS.
@@ -67,7 +67,7 @@ int motor_control_off(unsigned m);
  * the board model's default motor (2000 counts/s at full power, tau 50 ms):
  * kp = 1.0, ki = 20.0 (the integral time kp/ki = 50 ms cancels the motor's
  * time constant). */
-#define MOTOR_GAIN_MAX   (1000 * 256)
+#define MOTOR_GAIN_MAX   (1000 * 256)   /* = MOTOR_PI_GAIN_MAX */
 #define MOTOR_KP_DEFAULT 256
 #define MOTOR_KI_DEFAULT (20 * 256)
 int motor_set_gains(unsigned m, int32_t kp, int32_t ki);

@@ -15,6 +15,7 @@
 
 #define MOTOR_PI_OUT_MAX 1000          /* per-mille */
 #define MOTOR_PI_Q 8                   /* gains and the integral are in Q8 */
+#define MOTOR_PI_GAIN_MAX (1000 << MOTOR_PI_Q) /* kp, ki 0..this (overflow-free range) */
 
 struct motor_pi {
     int32_t kp;        /* Q8 per-mille per count/s */
@@ -27,7 +28,7 @@ struct motor_pi {
 void motor_pi_init(struct motor_pi *pi, int32_t kp, int32_t ki);
 /* Makes the next output continue from out_permille (bumpless start). */
 void motor_pi_preset(struct motor_pi *pi, int32_t out_permille);
-/* One period of dt_ms: returns the output, -1000..1000. */
-int32_t motor_pi_step(struct motor_pi *pi, int32_t setpoint, int32_t measured, uint32_t dt_ms);
+/* One period of dt_us microseconds (longer counts as 1 s): returns the output, -1000..1000. */
+int32_t motor_pi_step(struct motor_pi *pi, int32_t setpoint, int32_t measured, uint32_t dt_us);
 
 #endif /* DRIVERS_MOTOR_PI_H */
