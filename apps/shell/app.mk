@@ -7,7 +7,7 @@ shell_ICOUNT := shift=8,sleep=on
 
 # Target tests: the shell on the emulated board, every command checked over
 # QMP against the board model, plus `make run APP=shell` with piped stdin.
-# CHECKS += shell-target   (enabled once the motion drivers are merged)
+CHECKS += shell-target
 .PHONY: check-shell-target
 check-shell-target:
 	@$(SETUP) base m68k qemu
