@@ -99,19 +99,6 @@ static int wait_bytes(k_ticks_t deadline)
     return k_sem_wait_ticks(&rx_ready, left) == K_OK ? DRV_OK : DRV_ERR_TIMEOUT;
 }
 
-int console_getc(uint32_t timeout_ms)
-{
-    k_ticks_t deadline = k_ticks() + k_ms_to_ticks(timeout_ms);
-    uint8_t byte;
-    if (!initialised)
-        return DRV_ERR_STATE;
-    while (!ring_take(&byte)) {
-        if (wait_bytes(deadline) != DRV_OK)
-            return ring_take(&byte) ? (int)byte : DRV_ERR_TIMEOUT;
-    }
-    return (int)byte;
-}
-
 int console_read_line(char *buf, size_t size, uint32_t timeout_ms)
 {
     k_ticks_t deadline = k_ticks() + k_ms_to_ticks(timeout_ms);

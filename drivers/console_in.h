@@ -30,11 +30,6 @@ int console_in_init(void);
 /* Echo of typed characters (and line editing) to the console: on by default. */
 void console_in_set_echo(int on);
 
-/* The next received byte (0..255), waiting at most timeout_ms (0: do not
- * wait): DRV_ERR_TIMEOUT if none came, DRV_ERR_STATE before console_in_init.
- * Not to be mixed with console_read_line while a line is half typed. */
-int console_getc(uint32_t timeout_ms);
-
 /*
  * Reads one line into buf (without its end of line, NUL-terminated), waiting
  * at most timeout_ms for it to be finished. Returns its length (0 for an

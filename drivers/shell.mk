@@ -22,12 +22,4 @@ $(SHELL_UNIT_BUILD)/test_line_edit: drivers/tests/test_line_edit.c drivers/line_
 .PHONY: check-shell-unit
 check-shell-unit: $(SHELL_UNIT_TESTS)
 	@$(SETUP) base
-	@p=0; f=0; rc=0; \
-	for t in $(SHELL_UNIT_TESTS); do \
-	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
-	done; \
-	$(call record,shell-unit,$$p,$$f); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite shell-unit $(SHELL_UNIT_TESTS)

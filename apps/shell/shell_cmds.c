@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
+#include "drivers/console_in.h"
 #include "drivers/drv_err.h"
 #include "drivers/i2c.h"
 #include "drivers/motor.h"
@@ -319,6 +320,19 @@ static void cmd_i2c(int argc, char **argv, const char *line)
     }
 }
 
+static void cmd_console(int argc, char **argv, const char *line)
+{
+    struct console_in_stats st;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    console_in_stats(&st);
+    k_printf("console: %lu bytes, %lu lines, %lu too long, ring full %lu times, "
+             "%lu overruns, %lu errors\n",
+             (unsigned long)st.bytes, (unsigned long)st.lines, (unsigned long)st.too_long,
+             (unsigned long)st.ring_full, (unsigned long)st.overruns, (unsigned long)st.errors);
+}
+
 static void cmd_help(int argc, char **argv, const char *line);
 
 static const struct shell_cmd commands[] = {
@@ -335,6 +349,7 @@ static const struct shell_cmd commands[] = {
     {"ps", "", "threads: priority, state, stack used/size, switches", 0, 0, cmd_ps},
     {"uptime", "", "time since boot", 0, 0, cmd_uptime},
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
+    {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
 };
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 

@@ -80,7 +80,7 @@ def test_help_lists_every_command(shell):
     answer = shell.run("help")
     names = [line.split()[0] for line in answer]
     for cmd in ("help", "ad", "da", "bio", "bin", "fast", "pwm", "motor", "enc", "led",
-                "ps", "uptime", "i2c"):
+                "ps", "uptime", "i2c", "console"):
         assert cmd in names, answer
 
 
@@ -232,7 +232,7 @@ BAD_LINES = [
     "fast 1 2", "fast 1", "pwm 16 100", "pwm 3 1001", "pwm 3 100 10", "pwm 3 100 20001",
     "pwm 3", "motor 3 0", "motor 0 1001", "motor 0 -1001", "motor 0 99999999999",
     "enc 3", "led blink", "led on off", "i2c", "i2c probe", "ps now", "help me",
-    "uptime 1", "a b c d e f g h",
+    "uptime 1", "console x", "a b c d e f g h",
 ]
 
 
@@ -303,6 +303,12 @@ def test_many_lines_at_once_lose_nothing(shell):
         out = shell.m.console.read_until(PROMPT).decode("latin-1")
         answers += re.findall(r"^ad (\d+) = (\d+)\r?$", out, re.M)
     assert [(int(a), int(b)) for a, b in answers] == [(i % 24, i % 24 + 100) for i in range(count)]
+    # the ring did fill (reception paused), and no byte was lost in the chip
+    m = re.match(r"console: (\d+) bytes, (\d+) lines, (\d+) too long, ring full (\d+) times, "
+                 r"(\d+) overruns, (\d+) errors$", shell.one("console"))
+    assert m, "console counters"
+    assert int(m.group(4)) >= 1
+    assert int(m.group(5)) == 0 and int(m.group(6)) == 0
 
 
 def test_make_run_with_piped_stdin_ends_by_itself():
