@@ -326,3 +326,30 @@ def test_make_run_with_piped_stdin_ends_by_itself():
     assert re.search(r"shell> uptime\nuptime \d+\.\d{3} s", out), out
     assert "led = on" in out
     assert elapsed < 100
+
+
+def test_absent_chip_and_stuck_bus_answer_errors_and_the_shell_goes_on(shell):
+    # input 5 lives on the second PCF8591 (adc1: inputs 4..7)
+    shell.qset(IO, "ain5", 77)
+    shell.qset(IO + "/adc1", "nack", 1)
+    try:
+        answer = shell.error("ad 5")
+        assert "device absent" in answer and "(-3)" in answer, answer
+        assert "device absent" in shell.error("da 1 10")
+        assert shell.one("ad 0") == f"ad 0 = {shell.qget(IO, 'ain0')}"   # other chips still answer
+    finally:
+        shell.qset(IO + "/adc1", "nack", 0)
+    assert shell.one("ad 5") == "ad 5 = 77"
+    shell.qset(IO + "/i2c-a", "bus-stuck", 1)
+    try:
+        answer = shell.error("ad 5")
+        assert "timeout" in answer and "(-4)" in answer, answer
+        scan = shell.run("i2c scan")
+        assert scan[0].startswith("i2c bus A: timeout"), scan
+        assert scan[1] == "i2c bus B: 0 devices"
+        assert shell.one("led on") == "led = on"          # the rest of the board still works
+    finally:
+        shell.qset(IO + "/i2c-a", "bus-stuck", 0)
+    assert shell.one("ad 5") == "ad 5 = 77"
+    assert shell.run("i2c scan")[0] == "i2c bus A: 8 devices 0x38 0x39 0x48 0x49 0x4a 0x4b 0x4c 0x4d"
+    shell.one("led off")
