@@ -48,10 +48,19 @@ int32_t motor_pi_step(struct motor_pi *pi, int32_t setpoint, int32_t measured, u
     int64_t integral = pi->integral;
     int64_t unclamped = p + integral + di;
 
-    /* Conditional integration: no further integration into a saturated
-     * output; integrating back out of saturation is always allowed. */
-    if (!((unclamped > PI_LIMIT && di > 0) || (unclamped < -PI_LIMIT && di < 0)))
-        integral = pi_clamp(integral + di, PI_LIMIT);
+    /* Anti-windup: integrate only as far as the output's limit, never
+     * further into saturation (a P term alone beyond the limit freezes the
+     * integral); integrating back out of saturation is always allowed. */
+    if (unclamped > PI_LIMIT && di > 0) {
+        int64_t room = PI_LIMIT - p;
+        integral = room > integral ? (integral + di < room ? integral + di : room) : integral;
+    } else if (unclamped < -PI_LIMIT && di < 0) {
+        int64_t room = -PI_LIMIT - p;
+        integral = room < integral ? (integral + di > room ? integral + di : room) : integral;
+    } else {
+        integral += di;
+    }
+    integral = pi_clamp(integral, PI_LIMIT);
     pi->integral = (int32_t)integral;
     unclamped = p + integral;
     pi->saturated = (uint8_t)(unclamped > PI_LIMIT || unclamped < -PI_LIMIT);

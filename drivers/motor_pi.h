@@ -3,10 +3,11 @@
  * tested in drivers/tests/): error in counts/s, output in per-mille of
  * power, gains in Q8 (see drivers/motor.h motor_set_gains).
  *
- * Anti-windup: the integral term is clamped to the output range, and it does
- * not integrate further in the direction in which the output is saturated
- * (conditional integration), so a long saturation (a stalled or overloaded
- * motor) leaves no wound-up integral to overshoot with afterwards.
+ * Anti-windup: the integral term integrates only up to the point where the
+ * output reaches its limit, never further in the direction in which the
+ * output is saturated (clamping), and stays within the output range, so a
+ * long saturation (a stalled or overloaded motor, a large step) leaves no
+ * wound-up integral to overshoot with afterwards.
  */
 #ifndef DRIVERS_MOTOR_PI_H
 #define DRIVERS_MOTOR_PI_H

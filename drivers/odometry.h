@@ -47,7 +47,7 @@ void odometry_set_pose(struct odometry *o, int32_t x, int32_t y, uint32_t headin
 /* Integrates from the last counts to these (32-bit counts may wrap). */
 void odometry_update(struct odometry *o, int32_t left_counts, int32_t right_counts);
 
-/* Q30 cosine and sine of a binary angle (CORDIC), |error| < 2^-27. */
+/* Q30 cosine and sine of a binary angle (CORDIC), |error| < 2^-25 (measured 1.6e-8). */
 void odometry_cos_sin(uint32_t angle, int32_t *cos_q30, int32_t *sin_q30);
 
 #endif /* DRIVERS_ODOMETRY_H */
