@@ -233,6 +233,50 @@ static void cmd_motor(int argc, char **argv, const char *line)
     k_printf("motor %u = %ld per-mille\n", ch.index, (long)permille);
 }
 
+/* speed N CPS: closed loop, the motor service's PI controller. */
+static void cmd_speed(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t cps;
+    int rc;
+    char name[SHELL_LINE_MAX + 8u];
+    (void)argc;
+    (void)line;
+    (void)k_snprintf(name, sizeof name, "motor %s", argv[1]); /* the channel as SAI names it */
+    if (channel_of(name, &ch) < 0)
+        return;
+    if (!parse_int(argv[2], &cps)) {
+        reply_error("speed: '%s' is not a number", argv[2]);
+        return;
+    }
+    rc = motor_set_speed(ch.index, cps);
+    if (rc == DRV_ERR_RANGE) {
+        reply_error("speed %u: %ld out of range -%ld..%ld counts/s", ch.index, (long)cps,
+                    (long)MOTOR_SPEED_MAX, (long)MOTOR_SPEED_MAX);
+        return;
+    }
+    if (rc < 0) {
+        report_driver_error("speed", rc);
+        return;
+    }
+    k_printf("speed %u = %ld counts/s\n", ch.index, (long)cps);
+}
+
+/* sleep MS: waits, so that a script piped into the shell can let time pass. */
+#define SHELL_SLEEP_MAX_MS 60000
+static void cmd_sleep(int argc, char **argv, const char *line)
+{
+    int32_t ms;
+    (void)argc;
+    (void)line;
+    if (!parse_int(argv[1], &ms) || ms < 0 || ms > SHELL_SLEEP_MAX_MS) {
+        reply_error("sleep: '%s': milliseconds 0..%d", argv[1], SHELL_SLEEP_MAX_MS);
+        return;
+    }
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)ms));
+    k_printf("slept %ld ms\n", (long)ms);
+}
+
 /* enc N: position and speed. */
 static void cmd_enc(int argc, char **argv, const char *line)
 {
@@ -344,10 +388,12 @@ static const struct shell_cmd commands[] = {
     {"fast", "N V", "set fast output bit N (0..15) to V (0/1)", 2, 2, cmd_port},
     {"pwm", "CH PERMILLE [HZ]", "PWM on TPU channel CH (0..15), duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
     {"motor", "N SPEED", "motor N (0..2) power, signed per-mille (-1000..1000)", 2, 2, cmd_motor},
+    {"speed", "N CPS", "motor N closed loop: PI speed set-point in counts/s", 2, 2, cmd_speed},
     {"enc", "N", "encoder of motor N: position (counts) and speed (counts/s)", 1, 1, cmd_enc},
     {"led", "on|off", "switch the LED (no argument: show it)", 0, 1, cmd_led},
     {"ps", "", "threads: priority, state, stack used/size, switches", 0, 0, cmd_ps},
     {"uptime", "", "time since boot", 0, 0, cmd_uptime},
+    {"sleep", "MS", "wait MS milliseconds (0..60000), for scripts", 1, 1, cmd_sleep},
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
     {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
 };

@@ -80,7 +80,7 @@ def test_help_lists_every_command(shell):
     answer = shell.run("help")
     names = [line.split()[0] for line in answer]
     for cmd in ("help", "ad", "da", "bio", "bin", "fast", "pwm", "motor", "enc", "led",
-                "ps", "uptime", "i2c", "console"):
+                "ps", "uptime", "i2c", "console", "speed", "sleep"):
         assert cmd in names, answer
 
 
@@ -171,13 +171,29 @@ def test_enc_position_and_speed(shell):
     shell.qset(motor, "model-enabled", 1)
     # a running motor: position and speed follow the model
     shell.one("motor 0 1000")
-    shell.run("ps")                               # let some virtual time pass
-    shell.run("i2c scan")
+    assert shell.one("sleep 500") == "slept 500 ms"   # ten time constants of the model
     m = re.match(r"enc 0 = (-?\d+) counts, (-?\d+) counts/s$", shell.one("enc 0"))
     model_speed = shell.qget(IO + "/motor0", "speed")
     assert int(m.group(1)) > 0
     assert abs(int(m.group(2)) - model_speed) <= 0.1 * model_speed + 20, (m.group(0), model_speed)
     shell.one("motor 0 0")
+
+
+def test_speed_closed_loop_reaches_its_set_point(shell):
+    assert shell.one("speed 1 1000") == "speed 1 = 1000 counts/s"
+    shell.one("sleep 1000")
+    m = re.match(r"enc 1 = (-?\d+) counts, (-?\d+) counts/s$", shell.one("enc 1"))
+    assert abs(int(m.group(2)) - 1000) <= 50, m.group(0)
+    assert abs(shell.qget(IO + "/motor1", "speed") - 1000) <= 50
+    assert shell.qget(IO + "/motor1", "direction") == 1
+    assert shell.one("motor 1 0") == "motor 1 = 0 per-mille"   # back to open loop, braked
+    assert shell.qget(IO + "/motor1", "direction") == 0
+
+
+def test_sleep_waits_in_virtual_time(shell):
+    before = shell.qget("/machine/sim", "virtual-time-ns")
+    assert shell.one("sleep 2000") == "slept 2000 ms"
+    assert shell.qget("/machine/sim", "virtual-time-ns") - before >= 2_000_000_000
 
 
 def test_led_is_seen_by_the_host(shell):
@@ -232,7 +248,8 @@ BAD_LINES = [
     "fast 1 2", "fast 1", "pwm 16 100", "pwm 3 1001", "pwm 3 100 10", "pwm 3 100 20001",
     "pwm 3", "motor 3 0", "motor 0 1001", "motor 0 -1001", "motor 0 99999999999",
     "enc 3", "led blink", "led on off", "i2c", "i2c probe", "ps now", "help me",
-    "uptime 1", "console x", "a b c d e f g h",
+    "uptime 1", "console x", "speed 3 100", "speed 0 fast", "speed 0 99999999",
+    "sleep", "sleep -1", "sleep 60001", "sleep x", "a b c d e f g h",
 ]
 
 
