@@ -218,41 +218,42 @@ static void test_value_ranges(void **state)
 
 /* ---- dispatch ---- */
 
+/* One dispatch case: the channel, the fake driver's answer, the call expected
+ * and what reaches the caller (reads) or the driver (writes). */
+struct dispatch_case {
+    const char *channel;
+    int driver_result;
+    const char *call;
+    unsigned ch;
+    int32_t value;
+};
+
 static void test_read_dispatches(void **state)
 {
+    static const struct dispatch_case reads[] = {
+        {"analog in 5", 200, "analog_read", 5, 200},
+        {"bio 12", 1, "bio_read", 12, 1},
+        {"binary in 3", 0, "binin_read", 3, 0},
+        {"pwm 9", DRV_OK, "tpu_pwm_get", 9, 250},
+        {"motor 2", DRV_OK, "motor_power", 2, -300},
+        {"encoder 1", DRV_OK, "motor_position", 1, -123456},
+    };
+    size_t i;
     int32_t v = -1;
     (void)state;
-    next_result = 200;
-    assert_int_equal(sai_read(chan("analog in 5"), &v), DRV_OK);
-    assert_string_equal(last_call, "analog_read");
-    assert_int_equal(last_ch, 5);
-    assert_int_equal(v, 200);
-    next_result = 1;
-    assert_int_equal(sai_read(chan("bio 12"), &v), DRV_OK);
-    assert_string_equal(last_call, "bio_read");
-    assert_int_equal(last_ch, 12);
-    assert_int_equal(v, 1);
-    next_result = 0;
-    assert_int_equal(sai_read(chan("binary in 3"), &v), DRV_OK);
-    assert_string_equal(last_call, "binin_read");
-    assert_int_equal(last_ch, 3);
-    assert_int_equal(v, 0);
+    for (i = 0; i < sizeof reads / sizeof reads[0]; i++) {
+        next_result = reads[i].driver_result;
+        assert_int_equal(sai_read(chan(reads[i].channel), &v), DRV_OK);
+        assert_string_equal(last_call, reads[i].call);
+        assert_int_equal(last_ch, reads[i].ch);
+        assert_int_equal(v, reads[i].value);
+    }
+    /* no driver call: the fast outputs' shadow and the LED's state */
     fast_shadow = 0x0080;
     assert_int_equal(sai_read(chan("fast 7"), &v), DRV_OK);
     assert_int_equal(v, 1);
     assert_int_equal(sai_read(chan("fast 6"), &v), DRV_OK);
     assert_int_equal(v, 0);
-    next_result = DRV_OK;
-    assert_int_equal(sai_read(chan("pwm 9"), &v), DRV_OK);
-    assert_string_equal(last_call, "tpu_pwm_get");
-    assert_int_equal(v, 250);
-    assert_int_equal(sai_read(chan("motor 2"), &v), DRV_OK);
-    assert_string_equal(last_call, "motor_power");
-    assert_int_equal(v, -300);
-    assert_int_equal(sai_read(chan("encoder 1"), &v), DRV_OK);
-    assert_string_equal(last_call, "motor_position");
-    assert_int_equal(last_ch, 1);
-    assert_int_equal(v, -123456);
     led_state = true;
     assert_int_equal(sai_read(chan("led"), &v), DRV_OK);
     assert_int_equal(v, 1);
@@ -260,27 +261,21 @@ static void test_read_dispatches(void **state)
 
 static void test_write_dispatches(void **state)
 {
+    static const struct dispatch_case writes[] = {
+        {"analog out 2", DRV_OK, "analog_write", 2, 100},
+        {"binary io 12", DRV_OK, "bio_write", 12, 0},
+        {"fast out 7", DRV_OK, "fastout_write", 7, 1},
+        {"pwm 4", DRV_OK, "tpu_pwm", 4, 750},  /* hz 0: the channel keeps its frequency */
+        {"motor 1", DRV_OK, "motor_set", 1, -500},
+    };
+    size_t i;
     (void)state;
-    assert_int_equal(sai_write(chan("analog out 2"), 100), DRV_OK);
-    assert_string_equal(last_call, "analog_write");
-    assert_int_equal(last_ch, 2);
-    assert_int_equal(last_value, 100);
-    assert_int_equal(sai_write(chan("binary io 12"), 0), DRV_OK);
-    assert_string_equal(last_call, "bio_write");
-    assert_int_equal(last_ch, 12);
-    assert_int_equal(last_value, 0);
-    assert_int_equal(sai_write(chan("fast out 7"), 1), DRV_OK);
-    assert_string_equal(last_call, "fastout_write");
-    assert_int_equal(last_ch, 7);
-    assert_int_equal(last_value, 1);
-    assert_int_equal(sai_write(chan("pwm 4"), 750), DRV_OK);
-    assert_string_equal(last_call, "tpu_pwm");
-    assert_int_equal(last_ch, 4);
-    assert_int_equal(last_value, 750); /* hz 0: the channel keeps its frequency */
-    assert_int_equal(sai_write(chan("motor 1"), -500), DRV_OK);
-    assert_string_equal(last_call, "motor_set");
-    assert_int_equal(last_ch, 1);
-    assert_int_equal(last_value, -500);
+    for (i = 0; i < sizeof writes / sizeof writes[0]; i++) {
+        assert_int_equal(sai_write(chan(writes[i].channel), writes[i].value), DRV_OK);
+        assert_string_equal(last_call, writes[i].call);
+        assert_int_equal(last_ch, writes[i].ch);
+        assert_int_equal(last_value, writes[i].value);
+    }
     assert_int_equal(sai_write(chan("led"), 1), DRV_OK);
     assert_true(led_state);
     assert_int_equal(sai_write(chan("led"), 0), DRV_OK);
