@@ -11,12 +11,14 @@
  * steps: over one 10 ms period that quantisation alone is 10 %. TCR1 wraps
  * after 62.5 ms, so older samples are not used; with only an older one, the
  * counts are divided by the time since its sample; with no edge in a period,
- * the speed is bounded by one count per the time since the last edge.
+ * the speed is bounded by one count per the time since the last edge, and
+ * after MOTOR_STOPPED_US without one (under 4 counts/s) it is 0.
  *
  * Concurrency: the service thread and the API callers share each motor's
  * state; every access is a short section with interrupts masked (no lock a
- * caller could wait on), and the thread applies a controller output only if
- * the motor is still under closed loop when it does.
+ * caller could wait on). The thread computes the controller step on a copy
+ * and applies it only if the motor is still under closed loop and no API
+ * call changed it in between (a generation count).
  */
 #include <stddef.h>
 #include <stdint.h>
@@ -33,6 +35,8 @@
  * so that the model's 1 ms edge steps make at most about 3 % of it. */
 #define MOTOR_SPEED_WINDOW 4u
 #define MOTOR_AGE_MAX_US 2000000u   /* ages stop here (no wrap) */
+/* No edge for this long reads as standing still (below 4 counts/s). */
+#define MOTOR_STOPPED_US 250000u
 
 struct motor_wiring {
     uint8_t pwm;       /* TPU channel */
@@ -60,6 +64,7 @@ struct motor_state {
     int32_t power;           /* per-mille applied */
     int8_t direction;        /* -1, 0, 1 as the DUART bits are now */
     uint8_t closed;          /* under the speed controller */
+    uint32_t generation;     /* counts API changes (set-point, gains, open loop) */
     int32_t setpoint;        /* counts/s */
     struct motor_pi pi;
     /* speed estimate: the last samples that saw the count change */
@@ -120,6 +125,16 @@ static int motor_check(unsigned m)
     return DRV_OK;
 }
 
+/* counts / (ticks / TCR1_HZ). TCR1_HZ is 2^20: with fewer than 2^11 counts
+ * the product fits 32 bits and the CPU32's DIVS.L does it; more (only at
+ * very high speeds) takes libgcc's 64-bit division. */
+static int32_t motor_counts_per_s(int32_t counts, uint16_t ticks)
+{
+    if (counts > -2048 && counts < 2048)
+        return (counts * (int32_t)TPU_TCR1_HZ) / (int32_t)ticks;
+    return (int32_t)((int64_t)counts * TPU_TCR1_HZ / ticks);
+}
+
 /* One speed sample of motor m, dt_us after the previous one. */
 static void motor_sample(unsigned m, uint32_t dt_us)
 {
@@ -138,7 +153,7 @@ static void motor_sample(unsigned m, uint32_t dt_us)
     if (counts == 0) {
         /* No edge since the last change: at most one count in that time. */
         uint32_t since = st->hist[st->newest].valid ? st->hist[st->newest].age_us : MOTOR_AGE_MAX_US;
-        int32_t bound = (int32_t)(1000000u / since);
+        int32_t bound = since >= MOTOR_STOPPED_US ? 0 : (int32_t)(1000000u / since);
         if (st->speed > bound)
             st->speed = bound;
         else if (st->speed < -bound)
@@ -153,8 +168,8 @@ static void motor_sample(unsigned m, uint32_t dt_us)
             oldest = k;
     }
     if (oldest < MOTOR_SPEED_WINDOW && (uint16_t)(edge - st->hist[oldest].edge) != 0u) {
-        st->speed = (int32_t)((int64_t)(pos - st->hist[oldest].pos) * TPU_TCR1_HZ /
-                              (uint16_t)(edge - st->hist[oldest].edge));
+        st->speed = motor_counts_per_s(pos - st->hist[oldest].pos,
+                                       (uint16_t)(edge - st->hist[oldest].edge));
     } else {
         /* Only an old edge to go by: counts over the time since its sample. */
         uint32_t since = st->hist[st->newest].valid ? st->hist[st->newest].age_us : dt_us;
@@ -175,7 +190,8 @@ static void *motor_service(void *arg)
 
     for (;;) {
         k_ticks_t period = motor_period_ticks;
-        uint32_t dt_us = (uint32_t)(((uint64_t)period * 1000000u) / K_TICK_HZ);
+        /* period <= 1024 ticks (1 s): the product stays within 32 bits */
+        uint32_t dt_us = (uint32_t)period * 1000000u / K_TICK_HZ;
         unsigned m;
 
         next += period;
@@ -186,13 +202,28 @@ static void *motor_service(void *arg)
         (void)k_sleep_until(next);
         for (m = 0; m < MOTOR_COUNT; m++) {
             struct motor_state *st = &motors[m];
-            uint32_t irq;
-            int32_t out;
+            struct motor_pi pi;
+            int32_t setpoint, speed, out;
+            uint32_t irq, generation;
+            uint8_t closed;
 
             motor_sample(m, dt_us);
+            /* The controller step (64-bit arithmetic) runs on a copy with
+             * interrupts enabled; the result is applied only if no API call
+             * changed the motor meanwhile (generation). */
             irq = k_arch_irq_save();
-            if (st->closed) {
-                out = motor_pi_step(&st->pi, st->setpoint, st->speed, dt_us);
+            closed = st->closed;
+            generation = st->generation;
+            pi = st->pi;
+            setpoint = st->setpoint;
+            speed = st->speed;
+            k_arch_irq_restore(irq);
+            if (!closed)
+                continue;
+            out = motor_pi_step(&pi, setpoint, speed, dt_us);
+            irq = k_arch_irq_save();
+            if (st->closed && st->generation == generation) {
+                st->pi = pi;
                 (void)motor_apply(m, out);
             }
             k_arch_irq_restore(irq);
@@ -259,6 +290,7 @@ int motor_set(unsigned m, int permille)
         return DRV_ERR_RANGE;
     irq = k_arch_irq_save();
     motors[m].closed = 0;
+    motors[m].generation++;
     r = motor_apply(m, permille);
     k_arch_irq_restore(irq);
     return r;
@@ -311,6 +343,7 @@ int motor_set_speed(unsigned m, int32_t counts_per_s)
         motor_pi_preset(&motors[m].pi, motors[m].power);
     motors[m].setpoint = counts_per_s;
     motors[m].closed = 1;
+    motors[m].generation++;
     k_arch_irq_restore(irq);
     return DRV_OK;
 }
@@ -331,6 +364,7 @@ int motor_set_gains(unsigned m, int32_t kp, int32_t ki)
     irq = k_arch_irq_save();
     motors[m].pi.kp = kp;
     motors[m].pi.ki = ki;
+    motors[m].generation++;
     k_arch_irq_restore(irq);
     return DRV_OK;
 }

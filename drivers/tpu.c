@@ -117,6 +117,15 @@ static int tpu_check(unsigned ch)
     return DRV_OK;
 }
 
+/* tpu_check, and the channel must run `mode`. */
+static int tpu_check_mode(unsigned ch, enum tpu_mode mode)
+{
+    int r = tpu_check(ch);
+    if (r < 0)
+        return r;
+    return tpu_ch[ch].mode == mode ? DRV_OK : DRV_ERR_STATE;
+}
+
 /* Leaves a QDEC pair whole-or-nothing: taking one channel of a pair stops both. */
 static void tpu_leave_mode(unsigned ch)
 {
@@ -184,11 +193,9 @@ int tpu_pwm(unsigned ch, uint32_t hz, int permille)
 int tpu_pwm_get(unsigned ch, uint32_t *hz, int *permille)
 {
     uint32_t high, period;
-    int r = tpu_check(ch);
+    int r = tpu_check_mode(ch, TPU_MODE_PWM);
     if (r < 0)
         return r;
-    if (tpu_ch[ch].mode != TPU_MODE_PWM)
-        return DRV_ERR_STATE;
     high = TPU_PARAM(ch, 2);
     period = TPU_PARAM(ch, 3);
     if (hz != NULL)
@@ -274,13 +281,11 @@ int tpu_itc_count(unsigned ch, uint32_t *count)
 {
     uint32_t irq;
     uint16_t pending_before, pending_after, trans;
-    int r = tpu_check(ch);
+    int r = tpu_check_mode(ch, TPU_MODE_ITC);
     if (r < 0)
         return r;
     if (count == NULL)
         return DRV_ERR_PARAM;
-    if (tpu_ch[ch].mode != TPU_MODE_ITC)
-        return DRV_ERR_STATE;
     irq = k_arch_irq_save();
     /* TRANS_COUNT restarts at 0 when it reaches the chunk and sets CISR; the
      * interrupt that adds the chunk may be held off by our mask. Read until
@@ -298,11 +303,9 @@ int tpu_itc_count(unsigned ch, uint32_t *count)
 int tpu_itc_clear(unsigned ch)
 {
     uint32_t irq;
-    int r = tpu_check(ch);
+    int r = tpu_check_mode(ch, TPU_MODE_ITC);
     if (r < 0)
         return r;
-    if (tpu_ch[ch].mode != TPU_MODE_ITC)
-        return DRV_ERR_STATE;
     irq = k_arch_irq_save();
     tpu_request(ch, 1u);
     TPU_CISR = (uint16_t)~(1u << ch);
@@ -360,11 +363,9 @@ int tpu_qdec_sample(unsigned primary_ch, int32_t *pos, uint16_t *edge_tcr1)
 {
     uint32_t irq;
     uint16_t raw, again, edge;
-    int r = tpu_check(primary_ch);
+    int r = tpu_check_mode(primary_ch, TPU_MODE_QDEC_PRIMARY);
     if (r < 0)
         return r;
-    if (tpu_ch[primary_ch].mode != TPU_MODE_QDEC_PRIMARY)
-        return DRV_ERR_STATE;
     irq = k_arch_irq_save();
     /* The TPU updates count and edge time together, between our reads. */
     do {
@@ -392,11 +393,9 @@ int tpu_qdec_position(unsigned primary_ch, int32_t *pos)
 int tpu_qdec_set(unsigned primary_ch, int32_t pos)
 {
     uint32_t irq;
-    int r = tpu_check(primary_ch);
+    int r = tpu_check_mode(primary_ch, TPU_MODE_QDEC_PRIMARY);
     if (r < 0)
         return r;
-    if (tpu_ch[primary_ch].mode != TPU_MODE_QDEC_PRIMARY)
-        return DRV_ERR_STATE;
     irq = k_arch_irq_save();
     tpu_ch[primary_ch].qdec_last = TPU_PARAM(primary_ch, 1);
     tpu_ch[primary_ch].qdec_pos = pos;

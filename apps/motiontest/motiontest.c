@@ -10,13 +10,18 @@
  *   itc CH EDGES           tpu_itc_start           itcget CH -> ok COUNT    itcclr CH
  *   qdec A B               tpu_qdec_start          qpos A -> ok POS         qset A POS
  *   irq CH                 count CH's interrupts   irqget CH -> ok COUNT (tpu_irq_count too)
+ *   irqwait CH MS          -> ok (CH's interrupts during MS ms)
  *   release CH             tpu_release
  *   motor M PERMILLE       motor_set               enc M -> ok POS SPEED POWER
  *   speed M V              motor_set_speed         off M   gains M KP KI
  *   period MS              motor_control_start     stats -> ok PERIODS PERIOD_MS LATE
  *   wait MS                sleeps MS (virtual time)
  *   step M V MS            motor_set_speed, then one "T_US SPEED POWER" sample per
- *                          service period for MS ms -> ok N then N lines
+ *                          service period for MS ms -> ok N T0_US then N lines
+ *                          (T0_US: the tick time of the set-point change)
+ *   odo MMPC BASE          odometry_init over motors 0 (left) and 2 (right), geometry Q16 mm
+ *   odoget                 odometry_update from the motor positions -> ok X Y HEADING
+ *   cpuload MS             -> ok TURNS of a lowest-priority busy loop during MS ms
  *   time                   -> ok UPTIME_MS
  */
 #include <stdint.h>
@@ -26,6 +31,7 @@
 #include "drivers/drv_err.h"
 #include "drivers/mc68681.h"
 #include "drivers/motor.h"
+#include "drivers/odometry.h"
 #include "drivers/tpu.h"
 
 #define LINE_MAX 80u
@@ -34,6 +40,53 @@
 static struct k_thread test_thread;
 K_STACK_DEFINE(test_stack, 2048u);
 static volatile uint32_t irq_counts[TPU_CHANNELS];
+/* Odometry over motor 0 (left wheel) and motor 2 (right), as CubeOS' icontrol. */
+static struct odometry odo;
+#define ODO_LEFT 0u
+#define ODO_RIGHT 2u
+
+static void reply(int r)
+{
+    if (r < 0)
+        k_printf("err %d\n", r);
+    else
+        k_printf("ok\n");
+}
+
+/* CPU load: a lowest-priority thread counts loop turns while the test
+ * thread sleeps; fewer turns than in a quiet run = time taken by the rest. */
+static struct k_thread busy_thread;
+K_STACK_DEFINE(busy_stack, 512u);
+static volatile uint32_t busy_count;
+static volatile int busy_run;
+
+static void *busy_main(void *arg)
+{
+    (void)arg;
+    while (busy_run)
+        busy_count++;
+    return NULL;
+}
+
+static void cpu_load(int32_t ms)
+{
+    int r;
+    busy_count = 0;
+    busy_run = 1;
+    r = k_thread_create(&busy_thread, "busy", busy_main, NULL, busy_stack, sizeof busy_stack,
+                        K_PRIO_APP_MIN);
+    if (r != K_OK) {
+        reply(DRV_ERR_STATE);
+        return;
+    }
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)ms));
+    busy_run = 0;
+    r = k_thread_join(&busy_thread, NULL, K_TICK_HZ);
+    if (r != K_OK)
+        reply(DRV_ERR_TIMEOUT);
+    else
+        k_printf("ok %lu\n", (unsigned long)busy_count);
+}
 
 static void count_irq(unsigned ch, void *arg)
 {
@@ -106,28 +159,26 @@ static int parse(char *line, char **word, int32_t *num, unsigned max)
     return (int)count;
 }
 
-static void reply(int r)
-{
-    if (r < 0)
-        k_printf("err %d\n", r);
-    else
-        k_printf("ok\n");
-}
-
 static void step_response(unsigned m, int32_t v, int32_t ms)
 {
     struct motor_service_stats st;
-    uint32_t start_periods, last_periods, t0, n = 0;
+    uint32_t last_periods, t0, n = 0, start_us;
     static int32_t speeds[512];
     static int16_t powers[512];
     static uint32_t times[512];
-    int r = motor_set_speed(m, v);
-    if (r < 0 || ms <= 0) {
-        reply(r < 0 ? r : DRV_ERR_RANGE);
+    int r;
+    if (ms <= 0) {
+        reply(DRV_ERR_RANGE);
+        return;
+    }
+    start_us = (uint32_t)(((uint64_t)k_ticks() * 1000000u) / K_TICK_HZ);
+    r = motor_set_speed(m, v);
+    if (r < 0) {
+        reply(r);
         return;
     }
     (void)motor_service_stats(&st);
-    start_periods = last_periods = st.periods;
+    last_periods = st.periods;
     t0 = k_uptime_ms();
     while (k_uptime_ms() - t0 < (uint32_t)ms && n < 512u) {
         (void)k_sleep_ticks(1);
@@ -142,8 +193,7 @@ static void step_response(unsigned m, int32_t v, int32_t ms)
             n++;
         }
     }
-    (void)start_periods;
-    k_printf("ok %lu\n", (unsigned long)n);
+    k_printf("ok %lu %lu\n", (unsigned long)n, (unsigned long)start_us);
     for (uint32_t i = 0; i < n; i++)
         k_printf("%lu %ld %d\n", (unsigned long)times[i], (long)speeds[i], (int)powers[i]);
 }
@@ -209,6 +259,12 @@ static void run_command(char *line)
             reply(DRV_ERR_CHANNEL);
         else
             k_printf("ok %lu %lu\n", (unsigned long)irq_counts[ch], (unsigned long)tpu_irq_count(ch));
+    } else if (str_eq(w, "irqwait") && n == 2 && ch < TPU_CHANNELS && a[1] >= 0) {
+        /* Interrupts of ch during MS ms, counted inside the firmware: the
+         * host's own pauses between commands do not enter the count. */
+        uint32_t before = irq_counts[ch];
+        (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[1]));
+        k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
     } else if (str_eq(w, "release") && n == 1) {
         reply(tpu_release(ch));
     } else if (str_eq(w, "motor") && n == 2) {
@@ -246,6 +302,27 @@ static void run_command(char *line)
         reply(DRV_OK);
     } else if (str_eq(w, "step") && n == 3) {
         step_response(ch, a[1], a[2]);
+    } else if (str_eq(w, "odo") && n == 2) {
+        int32_t l = 0, rt = 0;
+        r = motor_position(ODO_LEFT, &l);
+        if (r >= 0)
+            r = motor_position(ODO_RIGHT, &rt);
+        if (r >= 0)
+            r = odometry_init(&odo, a[0], a[1], l, rt);
+        reply(r);
+    } else if (str_eq(w, "odoget") && n == 0) {
+        int32_t l = 0, rt = 0;
+        r = motor_position(ODO_LEFT, &l);
+        if (r >= 0)
+            r = motor_position(ODO_RIGHT, &rt);
+        if (r < 0) {
+            reply(r);
+        } else {
+            odometry_update(&odo, l, rt);
+            k_printf("ok %ld %ld %lu\n", (long)odo.x, (long)odo.y, (unsigned long)odo.heading);
+        }
+    } else if (str_eq(w, "cpuload") && n == 1 && a[0] > 0) {
+        cpu_load(a[0]);
     } else if (str_eq(w, "time") && n == 0) {
         k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
     } else {

@@ -35,12 +35,18 @@ class MotionBoard:
              "-monitor", "none", "-serial", "stdio", "-qmp", f"unix:{qmp_path},server=on,wait=off"],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.buf = b""
+        # The socket file can exist before QEMU listens on it: retry the connect.
         deadline = time.monotonic() + 10
-        while not os.path.exists(qmp_path):
-            assert time.monotonic() < deadline, "QMP socket did not appear"
-            time.sleep(0.02)
-        self.qmp = socket.socket(socket.AF_UNIX)
-        self.qmp.connect(str(qmp_path))
+        while True:
+            self.qmp = socket.socket(socket.AF_UNIX)
+            try:
+                self.qmp.connect(str(qmp_path))
+                break
+            except (FileNotFoundError, ConnectionRefusedError):
+                self.qmp.close()
+                assert time.monotonic() < deadline and self.proc.poll() is None, \
+                    "QMP socket did not open"
+                time.sleep(0.02)
         self.qmp_file = self.qmp.makefile("rw")
         json.loads(self.qmp_file.readline())
         self._qmp("qmp_capabilities")
