@@ -101,12 +101,15 @@ static int wait_bytes(k_ticks_t deadline)
 
 int console_read_line(char *buf, size_t size, uint32_t timeout_ms)
 {
-    k_ticks_t deadline = k_ticks() + k_ms_to_ticks(timeout_ms);
+    k_ticks_t deadline;
     size_t limit;
     if (!initialised)
         return DRV_ERR_STATE;
     if (buf == NULL || size == 0u)
         return DRV_ERR_PARAM;
+    if (timeout_ms > CONSOLE_IN_TIMEOUT_MAX_MS)
+        timeout_ms = CONSOLE_IN_TIMEOUT_MAX_MS;
+    deadline = k_ticks() + k_ms_to_ticks(timeout_ms);
     /* The caller's buffer bounds the line too; a half-typed line that is
      * already longer is refused when it ends. */
     limit = size < sizeof line_buf ? size : sizeof line_buf;

@@ -21,6 +21,9 @@
 /* Receive ring (bytes, a power of two) and the longest line, in characters. */
 #define CONSOLE_IN_RING     256u
 #define CONSOLE_IN_LINE_MAX 120u
+/* The longest wait console_read_line accepts (one day; keeps the tick
+ * arithmetic far from wrapping). */
+#define CONSOLE_IN_TIMEOUT_MAX_MS 86400000u
 
 /* Attaches the receive interrupt and unmasks it; call after k_board_init.
  * DRV_OK, or DRV_ERR_STATE if the DUART handler slots are taken or it was
@@ -32,7 +35,8 @@ void console_in_set_echo(int on);
 
 /*
  * Reads one line into buf (without its end of line, NUL-terminated), waiting
- * at most timeout_ms for it to be finished. Returns its length (0 for an
+ * at most timeout_ms (at most CONSOLE_IN_TIMEOUT_MAX_MS, larger values are
+ * clamped) for it to be finished. Returns its length (0 for an
  * empty line or one cancelled with Ctrl-C / Ctrl-U), or
  *   DRV_ERR_RANGE    the line had more than size - 1 (or CONSOLE_IN_LINE_MAX)
  *                    characters: it was discarded whole, up to its end;
