@@ -35,14 +35,13 @@ struct i2c_bus {
     struct i2c_xfer *tail;
     uint8_t ready;
     uint8_t own_addr;
-    uint8_t vector;
-    uint8_t level;
+    uint8_t vector;            /* S3; the handler is cpu32_vector_<vector> */
     struct i2c_stats stats;
 };
 
 static struct i2c_bus i2c_buses[I2C_BUS_COUNT] = {
-    { .fsm = { .base = (volatile uint8_t *)I2C_A_BASE }, .own_addr = 0x55u, .vector = 27u, .level = 3u },
-    { .fsm = { .base = (volatile uint8_t *)I2C_B_BASE }, .own_addr = 0x56u, .vector = 25u, .level = 1u },
+    { .fsm = { .base = (volatile uint8_t *)I2C_A_BASE }, .own_addr = 0x55u, .vector = 27u },
+    { .fsm = { .base = (volatile uint8_t *)I2C_B_BASE }, .own_addr = 0x56u, .vector = 25u },
 };
 
 static struct k_thread i2c_service_thread;
@@ -50,10 +49,14 @@ K_STACK_DEFINE(i2c_service_stack, I2C_SERVICE_STACK);
 static struct k_sem i2c_service_wake;
 static uint8_t i2c_service_running;
 
+/* Ticks a transaction may take (computed at submit, so the interrupt
+ * handler only adds): the base plus I2C_DEADLINE_US_PER_BYTE per byte on the
+ * wire, rounded up to whole ticks. */
 static k_ticks_t xfer_ticks(const struct i2c_xfer *x)
 {
     uint32_t bytes = 1u + (uint32_t)x->wr_len + (x->rd_len ? 2u + (uint32_t)x->rd_len : 0u);
-    return k_ms_to_ticks(I2C_DEADLINE_BASE_MS + (bytes * I2C_DEADLINE_US_PER_BYTE + 999u) / 1000u);
+    return (I2C_DEADLINE_BASE_MS * K_TICK_HZ + 999u) / 1000u +
+           (bytes * I2C_DEADLINE_US_PER_BYTE * K_TICK_HZ + 999999u) / 1000000u;
 }
 
 static void controller_reset(struct i2c_bus *b)
@@ -70,7 +73,7 @@ static void start_head(struct i2c_bus *b)
         return;
     if (!x->started) {
         x->started = 1;
-        x->deadline = k_ticks() + xfer_ticks(x);
+        x->deadline += k_ticks();   /* held the allowed duration until now */
     }
     (void)i2c_fsm_start(&b->fsm, x);   /* bus busy: the service thread retries */
 }
@@ -97,12 +100,50 @@ static void complete_head(struct i2c_bus *b)
         x->done(x, x->arg);
 }
 
-static void i2c_isr(void *arg)
+/*
+ * The controllers' interrupts, claimed by name in the flash vector table
+ * (start.S; copied to the kernel's RAM table) instead of through
+ * k_irq_register: a byte interrupt only moves the state machine on and
+ * touches no kernel state, so it skips the kernel's interrupt entry and
+ * scheduling decision (measured: about 170 instructions per byte that way,
+ * against about 50 here; at 256 ns per instruction and 100 us per byte that is
+ * the difference between 43 % and 13 % of the CPU). Only the end of a
+ * transaction, which may wake a thread, runs inside k_isr_enter/k_isr_exit.
+ * A transaction without a callback ends without any kernel call at all.
+ * The handler masks all interrupts at once, so no tick nests inside it.
+ * Vectors: S3 holds 27 (bus A, level 3) / 25 (bus B, level 1), the
+ * autovector numbers of those levels, so the vector is right whether the
+ * board autovectors or takes the PCF8584's.
+ */
+static inline void i2c_irq(struct i2c_bus *b)
 {
-    struct i2c_bus *b = arg;
+    /* Mask everything while the handler runs (RTE restores the mask): the
+     * kernel does not know it is inside this handler, so a tick nested here
+     * could switch threads and let another instance of this interrupt run
+     * between our status read and register write. About 25 instructions. */
+    __asm__ __volatile__("ori.w #0x0700,%%sr" : : : "memory", "cc");
     b->stats.interrupts++;
-    if (i2c_fsm_interrupt(&b->fsm) == I2C_FSM_DONE)
-        complete_head(b);
+    if (i2c_fsm_interrupt(&b->fsm) == I2C_FSM_DONE) {
+        if (b->head->done != NULL) {   /* it may wake a thread */
+            k_isr_enter();
+            complete_head(b);
+            k_isr_exit();
+        } else {
+            complete_head(b);
+        }
+    }
+}
+
+void cpu32_vector_27(void) __attribute__((interrupt_handler));
+void cpu32_vector_27(void)
+{
+    i2c_irq(&i2c_buses[I2C_BUS_A]);
+}
+
+void cpu32_vector_25(void) __attribute__((interrupt_handler));
+void cpu32_vector_25(void)
+{
+    i2c_irq(&i2c_buses[I2C_BUS_B]);
 }
 
 /* Ends the head with DRV_ERR_TIMEOUT and resets the controller (interrupts masked). */
@@ -174,8 +215,6 @@ int i2c_init(unsigned bus)
         b->ready = 0;
         return DRV_ERR_ABSENT;
     }
-    if (!b->ready && k_irq_register(b->vector, b->level, i2c_isr, b) != K_OK)
-        return DRV_ERR_STATE;
     b->ready = 1;
     return DRV_OK;
 }
@@ -183,6 +222,7 @@ int i2c_init(unsigned bus)
 int i2c_submit(unsigned bus, struct i2c_xfer *x)
 {
     struct i2c_bus *b;
+    k_ticks_t allowed;
     uint32_t s;
 
     if (bus >= I2C_BUS_COUNT)
@@ -193,6 +233,7 @@ int i2c_submit(unsigned bus, struct i2c_xfer *x)
         return DRV_ERR_PARAM;
     if (!b->ready)
         return DRV_ERR_STATE;
+    allowed = xfer_ticks(x);
     s = k_arch_irq_save();
     if (x->status == I2C_PENDING && (x->next != NULL || b->tail == x || b->head == x)) {
         k_arch_irq_restore(s);
@@ -201,6 +242,7 @@ int i2c_submit(unsigned bus, struct i2c_xfer *x)
     x->status = I2C_PENDING;
     x->next = NULL;
     x->started = 0;
+    x->deadline = allowed;
     if (b->tail != NULL) {
         b->tail->next = x;
         b->tail = x;

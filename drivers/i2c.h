@@ -51,12 +51,14 @@ struct i2c_xfer {
     size_t wr_len;
     uint8_t *rd;              /* then bytes to read (repeated START if wr_len > 0) */
     size_t rd_len;            /* wr_len == rd_len == 0: address only (a probe) */
-    i2c_done_fn done;         /* may be NULL: poll status */
+    i2c_done_fn done;         /* may be NULL: poll status (a queue of several
+                                 transactions may give a callback to the last
+                                 one only: a bus runs its queue in order) */
     void *arg;
     /* Owned by the driver while status == I2C_PENDING. */
     volatile int status;      /* I2C_PENDING, then DRV_OK or a DRV_ERR_* code */
     struct i2c_xfer *next;
-    uint32_t deadline;        /* kernel tick by which it must have ended */
+    uint32_t deadline;        /* ticks allowed, then the tick by which it must end */
     uint8_t started;          /* the controller has begun it */
 };
 

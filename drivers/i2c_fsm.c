@@ -15,7 +15,6 @@ int i2c_fsm_reset(struct i2c_fsm *f, uint8_t own_addr, uint8_t vector)
     f->x = NULL;
     f->state = I2C_FSM_IDLE;
     f->need_reset = 0;
-    f->idx = 0;
     I2C_FSM_WR(f, PCF_S1, PCF_CTL_RESET);        /* serial interface off, S0' selected */
     if (I2C_FSM_RD(f, PCF_S1) != PCF_CTL_RESET)  /* control bits read back */
         return -1;
@@ -63,71 +62,65 @@ enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x)
     if (!(I2C_FSM_RD(f, PCF_S1) & PCF_ST_BB))
         return I2C_FSM_BUS_BUSY;
     f->x = x;
-    f->idx = 0;
     f->need_reset = 0;
+    f->wp = x->wr;
+    f->wr_end = x->wr_len > 0 ? x->wr + x->wr_len : x->wr;
+    f->rp = x->rd;
+    f->rd_fast_end = x->rd_len >= 2u ? x->rd + (x->rd_len - 2u) : x->rd;
     if (x->wr_len == 0 && x->rd_len > 0) {
         begin_read(f, 0);
     } else {
-        f->state = I2C_FSM_ADDR_W;
+        f->state = I2C_FSM_DATA_W;
         I2C_FSM_WR(f, PCF_S0, (uint8_t)(x->addr7 << 1));
         I2C_FSM_WR(f, PCF_S1, PCF_CTL_START);
     }
     return I2C_FSM_RUNNING;
 }
 
-/* After the last written byte (or the write address): read part, or STOP. */
-static enum i2c_fsm_event after_write(struct i2c_fsm *f)
-{
-    if (f->x->rd_len > 0) {
-        begin_read(f, 1);
-        return I2C_FSM_RUNNING;
-    }
-    return stop(f, DRV_OK);
-}
-
-enum i2c_fsm_event i2c_fsm_interrupt(struct i2c_fsm *f)
+enum i2c_fsm_event i2c_fsm_step(struct i2c_fsm *f, uint8_t st)
 {
     struct i2c_xfer *x = f->x;
-    uint8_t st = I2C_FSM_RD(f, PCF_S1);
 
-    if (x == NULL || (st & PCF_ST_PIN))
+    if (x == NULL)
         return I2C_FSM_SPURIOUS;
-    if (st & PCF_ST_LAB)          /* another master won: we no longer drive the bus */
-        return finish(f, DRV_ERR_ARB, 1);
-    if (st & PCF_ST_BER)          /* misplaced START/STOP on the bus */
-        return finish(f, DRV_ERR_TIMEOUT, 1);
+    if (st & (PCF_ST_PIN | PCF_ST_LAB | PCF_ST_BER)) {
+        if (st & PCF_ST_PIN)      /* byte not done: not ours */
+            return I2C_FSM_SPURIOUS;
+        if (st & PCF_ST_LAB)      /* another master won: we no longer drive the bus */
+            return finish(f, DRV_ERR_ARB, 1);
+        return finish(f, DRV_ERR_TIMEOUT, 1);   /* BER: misplaced START/STOP on the bus */
+    }
 
     switch (f->state) {
-    case I2C_FSM_ADDR_W:
     case I2C_FSM_DATA_W:
         if (st & PCF_ST_LRB)
             return stop(f, DRV_ERR_ABSENT);
-        if (f->idx < x->wr_len) {
-            I2C_FSM_WR(f, PCF_S0, x->wr[f->idx]);
-            f->idx++;
-            f->state = I2C_FSM_DATA_W;
+        if (f->wp < f->wr_end) {
+            I2C_FSM_WR(f, PCF_S0, *f->wp++);
             return I2C_FSM_RUNNING;
         }
-        return after_write(f);
+        if (x->rd_len > 0) {
+            begin_read(f, 1);
+            return I2C_FSM_RUNNING;
+        }
+        return stop(f, DRV_OK);
     case I2C_FSM_ADDR_R:
         if (st & PCF_ST_LRB)
             return stop(f, DRV_ERR_ABSENT);
-        f->idx = 0;
         f->state = I2C_FSM_DATA_R;
         if (x->rd_len == 1)
             I2C_FSM_WR(f, PCF_S1, PCF_CTL_NACK);   /* the only byte is the last */
         (void)I2C_FSM_RD(f, PCF_S0);               /* dummy read: clocks in byte 0 */
         return I2C_FSM_RUNNING;
     case I2C_FSM_DATA_R:
-        if (f->idx + 1u >= x->rd_len) {
+        if (f->rp + 1 >= x->rd + x->rd_len) {
             I2C_FSM_WR(f, PCF_S1, PCF_CTL_STOP);   /* before the read: no more clocks */
-            x->rd[f->idx] = I2C_FSM_RD(f, PCF_S0);
+            *f->rp = I2C_FSM_RD(f, PCF_S0);
             return finish(f, DRV_OK, 0);
         }
-        if (f->idx + 2u == x->rd_len)
+        if (f->rp + 2 == x->rd + x->rd_len)
             I2C_FSM_WR(f, PCF_S1, PCF_CTL_NACK);   /* the next byte is the last */
-        x->rd[f->idx] = I2C_FSM_RD(f, PCF_S0);
-        f->idx++;
+        *f->rp++ = I2C_FSM_RD(f, PCF_S0);
         return I2C_FSM_RUNNING;
     default:
         return I2C_FSM_SPURIOUS;

@@ -48,10 +48,9 @@
 
 enum i2c_fsm_state {
     I2C_FSM_IDLE = 0,
-    I2C_FSM_ADDR_W,    /* START + address (write) on the wire */
-    I2C_FSM_DATA_W,    /* a data byte on the wire */
+    I2C_FSM_DATA_W,    /* the write address or a data byte on the wire */
     I2C_FSM_ADDR_R,    /* (repeated) START + address (read) on the wire */
-    I2C_FSM_DATA_R     /* receiving rd[idx] */
+    I2C_FSM_DATA_R     /* receiving into rp */
 };
 
 /* What a call did. */
@@ -67,7 +66,11 @@ struct i2c_fsm {
     struct i2c_xfer *x;        /* the transaction on the wire, or NULL */
     uint8_t state;             /* enum i2c_fsm_state */
     uint8_t need_reset;        /* the result requires a controller reset */
-    uint16_t idx;
+    /* Cursors, so the per-byte path does no index arithmetic. */
+    const uint8_t *wp;         /* next byte to write */
+    const uint8_t *wr_end;
+    uint8_t *rp;               /* where the byte being received goes */
+    uint8_t *rd_fast_end;      /* rp below this: neither of the last two bytes */
 };
 
 #ifdef I2C_FSM_FAKE_HW
@@ -89,9 +92,41 @@ int i2c_fsm_reset(struct i2c_fsm *f, uint8_t own_addr, uint8_t vector);
  * (nothing sent; x not taken). */
 enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x);
 
-/* One controller interrupt. I2C_FSM_DONE ends f->x (status set, f->x NULL,
- * f->need_reset set when the controller must be reset before the next start). */
-enum i2c_fsm_event i2c_fsm_interrupt(struct i2c_fsm *f);
+/* One controller interrupt, st = the status register read in it (PIN and
+ * the error bits are checked here). I2C_FSM_DONE ends f->x (status set, f->x
+ * NULL, f->need_reset set when the controller must be reset before the next
+ * start). */
+enum i2c_fsm_event i2c_fsm_step(struct i2c_fsm *f, uint8_t st);
+
+/* One controller interrupt. The common cases are inline: a byte acknowledged
+ * in the middle of a write (the address included), a byte in the middle of a
+ * read, the read address of a read of 3 bytes or more (about 25
+ * instructions instead of about 65 through the general step); the start of
+ * the read part, the last two bytes of a read, the end and the errors go to
+ * i2c_fsm_step. */
+static inline enum i2c_fsm_event i2c_fsm_interrupt(struct i2c_fsm *f)
+{
+    uint8_t st;
+    if (f->x == NULL)
+        return I2C_FSM_SPURIOUS;
+    st = I2C_FSM_RD(f, PCF_S1);
+    if (!(st & (PCF_ST_PIN | PCF_ST_LAB | PCF_ST_BER | PCF_ST_LRB))) {
+        if (f->state == I2C_FSM_DATA_R && f->rp < f->rd_fast_end) {
+            *f->rp++ = I2C_FSM_RD(f, PCF_S0);      /* and the next byte starts */
+            return I2C_FSM_RUNNING;
+        }
+        if (f->state == I2C_FSM_DATA_W && f->wp < f->wr_end) {
+            I2C_FSM_WR(f, PCF_S0, *f->wp++);
+            return I2C_FSM_RUNNING;
+        }
+        if (f->state == I2C_FSM_ADDR_R && f->rp < f->rd_fast_end) {
+            f->state = I2C_FSM_DATA_R;         /* 3 bytes or more: no NACK yet */
+            (void)I2C_FSM_RD(f, PCF_S0);       /* dummy read: clocks in byte 0 */
+            return I2C_FSM_RUNNING;
+        }
+    }
+    return i2c_fsm_step(f, st);
+}
 
 /* Abandons the transaction on the wire (deadline passed): x->status =
  * DRV_ERR_TIMEOUT; returns the transaction or NULL. The caller resets. */

@@ -33,7 +33,7 @@ void motor_pi_init(struct motor_pi *pi, int32_t kp, int32_t ki)
 void motor_pi_preset(struct motor_pi *pi, int32_t out_permille)
 {
     int64_t out = pi_clamp(out_permille, MOTOR_PI_OUT_MAX);
-    pi->integral = (int32_t)(out << MOTOR_PI_Q);
+    pi->integral = (int32_t)(out * (1 << MOTOR_PI_Q));   /* a shift of a negative value is undefined */
     pi->out = (int32_t)out;
     pi->saturated = 0;
 }

@@ -38,6 +38,9 @@ struct tpu_channel {
 };
 
 static struct tpu_channel tpu_ch[TPU_CHANNELS];
+/* Consistent-read retries: edges between two reads make a retry; this many
+ * in a row (edges every few instructions) give DRV_ERR_BUSY, never a hang. */
+#define TPU_READ_TRIES 8u
 static int tpu_ready;
 
 static void tpu_set_bits(volatile uint16_t *reg, unsigned shift, unsigned width_mask, unsigned v)
@@ -281,6 +284,7 @@ int tpu_itc_count(unsigned ch, uint32_t *count)
 {
     uint32_t irq;
     uint16_t pending_before, pending_after, trans;
+    unsigned tries = TPU_READ_TRIES;
     int r = tpu_check_mode(ch, TPU_MODE_ITC);
     if (r < 0)
         return r;
@@ -294,7 +298,11 @@ int tpu_itc_count(unsigned ch, uint32_t *count)
         pending_before = (uint16_t)(TPU_CISR & (1u << ch));
         trans = TPU_PARAM(ch, 3);
         pending_after = (uint16_t)(TPU_CISR & (1u << ch));
-    } while (pending_before != pending_after);
+    } while (pending_before != pending_after && --tries > 0u);
+    if (tries == 0u) {
+        k_arch_irq_restore(irq);
+        return DRV_ERR_BUSY;        /* chunks completing faster than we can read */
+    }
     *count = tpu_ch[ch].itc_base + trans + (pending_after ? TPU_ITC_CHUNK : 0u);
     k_arch_irq_restore(irq);
     return DRV_OK;
@@ -363,6 +371,8 @@ int tpu_qdec_sample(unsigned primary_ch, int32_t *pos, uint16_t *edge_tcr1)
 {
     uint32_t irq;
     uint16_t raw, again, edge;
+    int32_t folded;
+    unsigned tries = TPU_READ_TRIES;
     int r = tpu_check_mode(primary_ch, TPU_MODE_QDEC_PRIMARY);
     if (r < 0)
         return r;
@@ -372,15 +382,15 @@ int tpu_qdec_sample(unsigned primary_ch, int32_t *pos, uint16_t *edge_tcr1)
         raw = TPU_PARAM(primary_ch, 1);
         edge = TPU_PARAM(primary_ch, 0);
         again = TPU_PARAM(primary_ch, 1);
-    } while (raw != again);
+    } while (raw != again && --tries > 0u);
+    /* Fold even when the pair never held still: the position keeps up. */
+    folded = tpu_qdec_fold(&tpu_ch[primary_ch], again);
     if (pos != NULL)
-        *pos = tpu_qdec_fold(&tpu_ch[primary_ch], raw);
-    else
-        (void)tpu_qdec_fold(&tpu_ch[primary_ch], raw);
+        *pos = folded;
     if (edge_tcr1 != NULL)
         *edge_tcr1 = edge;
     k_arch_irq_restore(irq);
-    return DRV_OK;
+    return tries == 0u ? DRV_ERR_BUSY : DRV_OK;
 }
 
 int tpu_qdec_position(unsigned primary_ch, int32_t *pos)

@@ -70,8 +70,9 @@ static void *spin_main(void *arg)
 static uint32_t spin_over(k_ticks_t *ticks, int (*fn)(unsigned), unsigned n, int *fn_result)
 {
     k_ticks_t t0;
-    uint32_t c;
-    spin_count = 0;
+    uint32_t c0 = spin_count, c;
+    /* Differences only: the spinner may be preempted between loading and
+     * storing the counter, so a reset to 0 from here could be undone. */
     spin_on = 1;
     (void)k_sem_post(&spin_go);
     t0 = k_ticks();
@@ -81,7 +82,7 @@ static uint32_t spin_over(k_ticks_t *ticks, int (*fn)(unsigned), unsigned n, int
     } else {
         (void)k_sleep_until(t0 + *ticks);
     }
-    c = spin_count;
+    c = spin_count - c0;
     spin_on = 0;
     return c;
 }

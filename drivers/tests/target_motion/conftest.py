@@ -91,6 +91,22 @@ class MotionBoard:
         assert reply.split()[0] == "ok", f"{text!r} -> {reply!r}"
         return [int(v) for v in reply.split()[1:]]
 
+    def sample_while(self, text, probe):
+        """Sends a command and, until its first reply line arrives, calls
+        probe() over and over (QMP reads while the firmware works); returns
+        (reply, [probe results])."""
+        self.proc.stdin.write(text.encode() + b"\n")
+        self.proc.stdin.flush()
+        results = []
+        deadline = time.monotonic() + REPLY_TIMEOUT
+        while b"\n" not in self.buf:
+            assert time.monotonic() < deadline and self.proc.poll() is None, "no reply"
+            results.append(probe())
+            ready, _, _ = select.select([self.proc.stdout], [], [], 0)
+            if ready:
+                self.buf += os.read(self.proc.stdout.fileno(), 65536)
+        return self.line(), results
+
     def send(self, text):
         self.proc.stdin.write(text.encode() + b"\n")
         self.proc.stdin.flush()

@@ -99,12 +99,21 @@ def test_step_response_0_to_50_percent(board):
     """Step of the set-point from rest to 50 % of the model's top speed; the
     samples are the driver's own speed estimate at each service period, times
     from the kernel tick (virtual time). The figures go to the README."""
-    n, t0 = board.cmd("step 0 1000 600")
+    def model_speed():
+        return (board._qmp("qom-get", path="/machine/sim", property="virtual-time-ns"),
+                board.get("/motor0", "speed"))
+    reply, model = board.sample_while("step 0 1000 600", model_speed)
+    n, t0 = [int(v) for v in reply.split()[1:]]
     samples = [tuple(int(v) for v in board.line().split()) for _ in range(n)]
     assert n >= 50
     settling_ms, overshoot = step_figures(samples, 1000, t0)
+    # The model's own speed over QMP, at whatever virtual times the host's
+    # reads landed (several ms apart): a cross-check of the peak.
+    model_peak = max(v for _, v in model)
     print(f"\nstep 0 -> 1000 counts/s (50 %): settling (5 %) {settling_ms:.0f} ms, "
-          f"overshoot {overshoot:.1f} %, {n} samples, first at {(samples[0][0] - t0) / 1000:.1f} ms")
+          f"overshoot {overshoot:.1f} %, {n} samples, first at {(samples[0][0] - t0) / 1000:.1f} ms; "
+          f"model's peak {model_peak} counts/s ({len(model)} QMP reads)")
+    assert 1000 <= model_peak <= 1080
     assert settling_ms < 250 and overshoot < 8
     # Stays in the band to the end, and the model agrees.
     assert all(abs(v - 1000) <= 50 for t, v, _ in samples[-20:])
