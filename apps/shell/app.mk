@@ -1,7 +1,7 @@
 # The console shell (apps/shell/README.md): make run APP=shell.
 # Interactive runs wait for keys most of the time: with sleep=off the idle
-# guest would jump from timer to timer at full host speed (a busy host core,
-# and uptime racing ahead of the wall clock), so make run uses sleep=on. The
+# guest jumps from timer to timer as fast as the host goes (measured: 34 % of
+# a host core and uptime 18 s after 5 s; README.md), so make run uses sleep=on. The
 # tests (apps/shell/tests/) run QEMU themselves with sleep=off (deterministic).
 shell_ICOUNT := shift=8,sleep=on
 
