@@ -383,13 +383,13 @@ static const struct shell_cmd commands[] = {
     {"help", "", "this list", 0, 0, cmd_help},
     {"ad", "N", "read analog input N (0..23)", 1, 1, cmd_port},
     {"da", "N V", "set analog output N (0..5) to V (0..255)", 2, 2, cmd_port},
-    {"bio", "N [V]", "read binary I/O line N (0..15), or set its latch (1 = input)", 1, 2, cmd_port},
+    {"bio", "N [V]", "binary I/O line N (0..15): read, or latch V (1 = input)", 1, 2, cmd_port},
     {"bin", "N", "read binary input N (1..5, DUART IP1-IP5)", 1, 1, cmd_port},
     {"fast", "N V", "set fast output bit N (0..15) to V (0/1)", 2, 2, cmd_port},
-    {"pwm", "CH PERMILLE [HZ]", "PWM on TPU channel CH (0..15), duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
+    {"pwm", "CH PERMILLE [HZ]", "TPU channel CH (0..15): PWM duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
     {"motor", "N SPEED", "motor N (0..2) power, signed per-mille (-1000..1000)", 2, 2, cmd_motor},
     {"speed", "N CPS", "motor N closed loop: PI speed set-point in counts/s", 2, 2, cmd_speed},
-    {"enc", "N", "encoder of motor N: position (counts) and speed (counts/s)", 1, 1, cmd_enc},
+    {"enc", "N", "motor N's encoder: position (counts), speed (counts/s)", 1, 1, cmd_enc},
     {"led", "on|off", "switch the LED (no argument: show it)", 0, 1, cmd_led},
     {"ps", "", "threads: priority, state, stack used/size, switches", 0, 0, cmd_ps},
     {"uptime", "", "time since boot", 0, 0, cmd_uptime},
@@ -408,7 +408,7 @@ static void cmd_help(int argc, char **argv, const char *line)
     for (i = 0; i < COMMAND_COUNT; i++) {
         char head[32];
         (void)k_snprintf(head, sizeof head, "%s %s", commands[i].name, commands[i].usage);
-        k_printf("  %-24s %s\n", head, commands[i].what);
+        k_printf("  %-22s %s\n", head, commands[i].what);
     }
 }
 
