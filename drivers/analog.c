@@ -20,17 +20,21 @@ struct analog_chip {
     uint8_t present;
     uint8_t bus;
     uint8_t addr7;
-    uint8_t aout_on;    /* the DAC output was enabled by a write */
+    uint8_t control;    /* for reads: auto-increment from AIN0, + output enable
+                           once a write enabled the DAC (a read must not turn
+                           it off: the control byte carries that bit) */
 };
 
 static struct analog_chip analog_chips[ANALOG_CHIPS];
+static uint32_t analog_gen;
 
 static int probe_bus(unsigned bus, uint8_t last, unsigned *n)
 {
     for (uint8_t a = PCF8591_ADDR_FIRST; a <= last && *n < ANALOG_CHIPS; a++) {
         int rc = i2c_probe(bus, a);
         if (rc == DRV_OK) {
-            analog_chips[*n] = (struct analog_chip){ .present = 1, .bus = (uint8_t)bus, .addr7 = a };
+            analog_chips[*n] = (struct analog_chip){ .present = 1, .bus = (uint8_t)bus, .addr7 = a,
+                                                     .control = PCF8591_AUTOINC };
             (*n)++;
         } else if (rc != DRV_ERR_ABSENT && rc != DRV_ERR_STATE) {
             return rc;
@@ -43,6 +47,7 @@ int analog_init(void)
 {
     unsigned n = 0;
     int rc;
+    analog_gen++;
     for (unsigned i = 0; i < ANALOG_CHIPS; i++)
         analog_chips[i] = (struct analog_chip){ 0 };
     rc = probe_bus(I2C_BUS_A, PCF8591_ADDR_LAST_A, &n);
@@ -51,12 +56,12 @@ int analog_init(void)
     return rc == DRV_OK ? (int)n : rc;
 }
 
-static uint8_t chip_control(const struct analog_chip *c)
+uint32_t analog_generation(void)
 {
-    return (uint8_t)(PCF8591_AUTOINC | (c->aout_on ? PCF8591_AOUT_ENABLE : 0u));
+    return analog_gen;
 }
 
-int analog_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7, uint8_t *control)
+int analog_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7, const uint8_t **control)
 {
     if (chip >= ANALOG_CHIPS)
         return DRV_ERR_CHANNEL;
@@ -64,18 +69,19 @@ int analog_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7, uint8_t *
         return DRV_ERR_ABSENT;
     *bus = analog_chips[chip].bus;
     *addr7 = analog_chips[chip].addr7;
-    *control = chip_control(&analog_chips[chip]);
+    *control = &analog_chips[chip].control;
     return DRV_OK;
 }
 
 int analog_read_chip(unsigned chip, uint8_t out[4])
 {
     unsigned bus;
-    uint8_t addr, control, raw[ANALOG_CHIP_READ_LEN];
+    uint8_t addr, raw[ANALOG_CHIP_READ_LEN];
+    const uint8_t *control;
     int rc = analog_chip_location(chip, &bus, &addr, &control);
     if (rc != DRV_OK)
         return rc;
-    rc = i2c_transfer(bus, addr, &control, 1, raw, sizeof(raw));
+    rc = i2c_transfer(bus, addr, control, 1, raw, sizeof(raw));
     if (rc != DRV_OK)
         return rc;
     for (unsigned i = 0; i < 4u; i++)
@@ -104,8 +110,8 @@ int analog_write(unsigned ch, int v)
     c = &analog_chips[ch];
     if (!c->present)
         return DRV_ERR_ABSENT;
-    c->aout_on = 1;
-    msg[0] = chip_control(c);
+    c->control |= PCF8591_AOUT_ENABLE;
+    msg[0] = c->control;
     msg[1] = (uint8_t)v;
     return i2c_transfer(c->bus, c->addr7, msg, sizeof(msg), NULL, 0);
 }

@@ -35,8 +35,12 @@ int analog_chip_present(unsigned chip);
 
 /* For the sampler: the bus, address and control byte of a chip's
  * auto-increment read (write control, repeated START, read 5 bytes: the
- * first byte is the previous conversion and is dropped). */
+ * first byte is the previous conversion and is dropped). *control points at
+ * the driver's copy, which stays valid and follows analog_write (output
+ * enable). DRV_OK, DRV_ERR_CHANNEL, DRV_ERR_ABSENT. */
 #define ANALOG_CHIP_READ_LEN 5u
-int analog_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7, uint8_t *control);
+int analog_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7, const uint8_t **control);
+/* Changes whenever analog_init has probed again (the locations may differ). */
+uint32_t analog_generation(void);
 
 #endif /* DRIVERS_ANALOG_H */

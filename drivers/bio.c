@@ -19,6 +19,7 @@ struct bio_chip {
 };
 
 static struct bio_chip bio_chips[BIO_CHIPS];
+static uint32_t bio_gen;
 /* Serialises the latch read-modify-write of bio_write between threads. */
 static struct k_mutex bio_lock;
 static uint8_t bio_lock_ready;
@@ -30,6 +31,7 @@ int bio_init(void)
         (void)k_mutex_init(&bio_lock);
         bio_lock_ready = 1;
     }
+    bio_gen++;
     for (unsigned i = 0; i < BIO_CHIPS; i++)
         bio_chips[i] = (struct bio_chip){ 0 };
     for (unsigned bus = 0; bus < I2C_BUS_COUNT; bus++) {
@@ -48,6 +50,11 @@ int bio_init(void)
         }
     }
     return (int)n;
+}
+
+uint32_t bio_generation(void)
+{
+    return bio_gen;
 }
 
 int bio_chip_present(unsigned chip)

@@ -27,5 +27,7 @@ uint16_t bio_latch(void);
 int bio_chip_present(unsigned chip);
 /* For the sampler: where chip lives. DRV_OK or DRV_ERR_ABSENT / DRV_ERR_CHANNEL. */
 int bio_chip_location(unsigned chip, unsigned *bus, uint8_t *addr7);
+/* Changes whenever bio_init has probed again. */
+uint32_t bio_generation(void);
 
 #endif /* DRIVERS_BIO_H */

@@ -48,16 +48,10 @@ static struct k_thread i2c_service_thread;
 K_STACK_DEFINE(i2c_service_stack, I2C_SERVICE_STACK);
 static struct k_sem i2c_service_wake;
 static uint8_t i2c_service_running;
-
-/* Ticks a transaction may take (computed at submit, so the interrupt
- * handler only adds): the base plus I2C_DEADLINE_US_PER_BYTE per byte on the
- * wire, rounded up to whole ticks. */
-static k_ticks_t xfer_ticks(const struct i2c_xfer *x)
-{
-    uint32_t bytes = 1u + (uint32_t)x->wr_len + (x->rd_len ? 2u + (uint32_t)x->rd_len : 0u);
-    return (I2C_DEADLINE_BASE_MS * K_TICK_HZ + 999u) / 1000u +
-           (bytes * I2C_DEADLINE_US_PER_BYTE * K_TICK_HZ + 999999u) / 1000000u;
-}
+/* The service thread waits on i2c_service_wake (every queue was empty): the
+ * next submit must wake it. Otherwise it sleeps until the nearest deadline,
+ * which is never later than a new transaction's, so no wake-up is needed. */
+static volatile uint8_t i2c_service_idle;
 
 static void controller_reset(struct i2c_bus *b)
 {
@@ -115,15 +109,24 @@ static void complete_head(struct i2c_bus *b)
  * autovector numbers of those levels, so the vector is right whether the
  * board autovectors or takes the PCF8584's.
  */
-static inline void i2c_irq(struct i2c_bus *b)
+static inline __attribute__((always_inline)) void i2c_irq(struct i2c_bus *b)
 {
     /* Mask everything while the handler runs (RTE restores the mask): the
      * kernel does not know it is inside this handler, so a tick nested here
      * could switch threads and let another instance of this interrupt run
      * between our status read and register write. About 25 instructions. */
     __asm__ __volatile__("ori.w #0x0700,%%sr" : : : "memory", "cc");
+    enum i2c_fsm_event ev;
     b->stats.interrupts++;
-    if (i2c_fsm_interrupt(&b->fsm) == I2C_FSM_DONE) {
+    ev = i2c_fsm_interrupt(&b->fsm);
+    if (ev == I2C_FSM_RUNNING)          /* most interrupts: one test */
+        return;
+    if (ev == I2C_FSM_SPURIOUS && b->fsm.x == NULL) {
+        /* A request with nothing on the wire (cannot happen with the
+         * sequences used; would repeat forever): writing PIN drops it. */
+        b->stats.spurious++;
+        I2C_FSM_WR(&b->fsm, PCF_S1, PCF_CTL_IDLE);
+    } else if (ev == I2C_FSM_DONE) {
         if (b->head->done != NULL) {   /* it may wake a thread */
             k_isr_enter();
             complete_head(b);
@@ -147,10 +150,18 @@ void cpu32_vector_25(void)
 }
 
 /* Ends the head with DRV_ERR_TIMEOUT and resets the controller (interrupts masked). */
+/* A transaction that ends without having run: it and its messages fail. */
+static void fail_unstarted(struct i2c_xfer *x, int err)
+{
+    for (struct i2c_xfer *m = x; m != NULL; m = m->more)
+        m->msg_status = err;
+    x->status = err;
+}
+
 static void timeout_head(struct i2c_bus *b)
 {
     if (i2c_fsm_abort(&b->fsm) == NULL)
-        b->head->status = DRV_ERR_TIMEOUT;   /* never got the bus */
+        fail_unstarted(b->head, DRV_ERR_TIMEOUT);   /* never got the bus */
     b->fsm.need_reset = 1;
     complete_head(b);
 }
@@ -179,10 +190,18 @@ static void *i2c_service(void *arg)
             }
             k_arch_irq_restore(s);
         }
-        if (active)
+        if (active) {
             (void)k_sleep_until(wake);
-        else
-            (void)k_sem_wait(&i2c_service_wake);
+        } else {
+            uint32_t s = k_arch_irq_save();
+            int empty = 1;
+            for (unsigned i = 0; i < I2C_BUS_COUNT; i++)
+                empty = empty && i2c_buses[i].head == NULL;
+            i2c_service_idle = (uint8_t)empty;
+            k_arch_irq_restore(s);
+            if (empty)
+                (void)k_sem_wait(&i2c_service_wake);
+        }
     }
     return NULL;
 }
@@ -219,6 +238,26 @@ int i2c_init(unsigned bus)
     return DRV_OK;
 }
 
+/* Checks every message of x's chain and marks it pending; returns the ticks
+ * the transaction may take (I2C_DEADLINE_BASE_MS plus
+ * I2C_DEADLINE_US_PER_BYTE per byte on the wire, rounded up to whole ticks;
+ * computed here so the interrupt handler only adds), or 0 for a bad chain. */
+static k_ticks_t chain_prepare(struct i2c_xfer *x)
+{
+    uint32_t bytes = 0, n = 0;
+    for (struct i2c_xfer *m = x; m != NULL; m = m->more) {
+        if (++n > I2C_MAX_CHAIN || m->addr7 > 0x7Fu || m->wr_len > I2C_MAX_LEN
+            || m->rd_len > I2C_MAX_LEN || (m->wr_len > 0 && m->wr == NULL)
+            || (m->rd_len > 0 && m->rd == NULL))
+            return 0;
+        bytes += 1u + (uint32_t)m->wr_len + (m->rd_len ? 2u + (uint32_t)m->rd_len : 0u);
+    }
+    if (n == 0)
+        return 0;
+    return (I2C_DEADLINE_BASE_MS * K_TICK_HZ + 999u) / 1000u +
+           (bytes * I2C_DEADLINE_US_PER_BYTE * K_TICK_HZ + 999999u) / 1000000u;
+}
+
 int i2c_submit(unsigned bus, struct i2c_xfer *x)
 {
     struct i2c_bus *b;
@@ -228,17 +267,18 @@ int i2c_submit(unsigned bus, struct i2c_xfer *x)
     if (bus >= I2C_BUS_COUNT)
         return DRV_ERR_CHANNEL;
     b = &i2c_buses[bus];
-    if (x == NULL || x->addr7 > 0x7Fu || x->wr_len > I2C_MAX_LEN || x->rd_len > I2C_MAX_LEN
-        || (x->wr_len > 0 && x->wr == NULL) || (x->rd_len > 0 && x->rd == NULL))
-        return DRV_ERR_PARAM;
     if (!b->ready)
         return DRV_ERR_STATE;
-    allowed = xfer_ticks(x);
+    allowed = chain_prepare(x);
+    if (allowed == 0)
+        return DRV_ERR_PARAM;
     s = k_arch_irq_save();
     if (x->status == I2C_PENDING && (x->next != NULL || b->tail == x || b->head == x)) {
         k_arch_irq_restore(s);
         return DRV_ERR_BUSY;
     }
+    for (struct i2c_xfer *m = x; m != NULL; m = m->more)
+        m->msg_status = I2C_PENDING;     /* only now: x may have been queued */
     x->status = I2C_PENDING;
     x->next = NULL;
     x->started = 0;
@@ -249,7 +289,10 @@ int i2c_submit(unsigned bus, struct i2c_xfer *x)
     } else {
         b->head = b->tail = x;
         start_head(b);
-        (void)k_sem_post(&i2c_service_wake);   /* watch its deadline */
+        if (i2c_service_idle) {                /* watch its deadline */
+            i2c_service_idle = 0;
+            (void)k_sem_post(&i2c_service_wake);
+        }
     }
     k_arch_irq_restore(s);
     return DRV_OK;
@@ -272,7 +315,7 @@ static void i2c_cancel(struct i2c_bus *b, struct i2c_xfer *x)
                     b->tail = p;
                 x->next = NULL;
             }
-            x->status = DRV_ERR_TIMEOUT;
+            fail_unstarted(x, DRV_ERR_TIMEOUT);
         }
     }
     k_arch_irq_restore(s);

@@ -55,8 +55,16 @@ struct i2c_xfer {
                                  transactions may give a callback to the last
                                  one only: a bus runs its queue in order) */
     void *arg;
+    /* Further messages of the same transaction, each after a repeated START
+     * (to any address): one queue entry, one deadline, one callback for a
+     * whole chain. A message that is not acknowledged does not end the chain:
+     * its msg_status says so and the next message follows. Only the first
+     * message's done/arg are used. NULL: a single message. */
+    struct i2c_xfer *more;
     /* Owned by the driver while status == I2C_PENDING. */
-    volatile int status;      /* I2C_PENDING, then DRV_OK or a DRV_ERR_* code */
+    volatile int status;      /* I2C_PENDING, then DRV_OK or the first error of
+                                 the transaction's messages */
+    volatile int msg_status;  /* this message's own result */
     struct i2c_xfer *next;
     uint32_t deadline;        /* ticks allowed, then the tick by which it must end */
     uint8_t started;          /* the controller has begun it */
@@ -69,10 +77,12 @@ struct i2c_xfer {
  * (pending transactions end with DRV_ERR_TIMEOUT). */
 int i2c_init(unsigned bus);
 
-/* Queues x (async). DRV_OK: x->done will be called exactly once. Otherwise
- * the error (DRV_ERR_CHANNEL, DRV_ERR_PARAM for lengths above I2C_MAX_LEN or a
- * NULL buffer, DRV_ERR_STATE before i2c_init, DRV_ERR_BUSY when x is already
- * queued) and done is not called. x must stay valid until done. */
+/* Queues x (async; with its chain x->more, at most I2C_MAX_CHAIN messages).
+ * DRV_OK: x->done will be called exactly once. Otherwise the error
+ * (DRV_ERR_CHANNEL, DRV_ERR_PARAM for lengths above I2C_MAX_LEN, a NULL buffer
+ * or a chain too long, DRV_ERR_STATE before i2c_init, DRV_ERR_BUSY when x is
+ * already queued) and done is not called. x must stay valid until done. */
+#define I2C_MAX_CHAIN 16u
 int i2c_submit(unsigned bus, struct i2c_xfer *x);
 
 /* Blocking write-then-read; waits at most the transaction's deadline plus the
@@ -90,7 +100,7 @@ int i2c_scan(unsigned bus, uint8_t *found, unsigned max);
 
 /* Counters per bus, for reports and tests. */
 struct i2c_stats {
-    uint32_t done, absent, arb, timeouts, resets, interrupts;
+    uint32_t done, absent, arb, timeouts, resets, interrupts, spurious;
 };
 int i2c_get_stats(unsigned bus, struct i2c_stats *out);
 

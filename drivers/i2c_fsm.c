@@ -13,6 +13,7 @@
 int i2c_fsm_reset(struct i2c_fsm *f, uint8_t own_addr, uint8_t vector)
 {
     f->x = NULL;
+    f->m = NULL;
     f->state = I2C_FSM_IDLE;
     f->need_reset = 0;
     I2C_FSM_WR(f, PCF_S1, PCF_CTL_RESET);        /* serial interface off, S0' selected */
@@ -27,34 +28,45 @@ int i2c_fsm_reset(struct i2c_fsm *f, uint8_t own_addr, uint8_t vector)
     return 0;
 }
 
+/* Ends the transaction (all its messages done or abandoned). */
 static enum i2c_fsm_event finish(struct i2c_fsm *f, int status, int need_reset)
 {
     struct i2c_xfer *x = f->x;
     f->x = NULL;
+    f->m = NULL;
     f->state = I2C_FSM_IDLE;
     f->need_reset = (uint8_t)need_reset;
     x->status = status;
     return I2C_FSM_DONE;
 }
 
-/* Ends the transaction with STOP (the normal end, and after a NACK). */
-static enum i2c_fsm_event stop(struct i2c_fsm *f, int status)
+/* The bus is lost (arbitration, bus error, deadline): the message on the wire
+ * and the ones after it end with err, and so does the transaction. */
+static enum i2c_fsm_event fail_all(struct i2c_fsm *f, int err)
 {
-    I2C_FSM_WR(f, PCF_S1, PCF_CTL_STOP);
-    return finish(f, status, 0);
+    for (struct i2c_xfer *m = f->m; m != NULL; m = m->more)
+        m->msg_status = err;
+    return finish(f, err, 1);
 }
 
-/* START or repeated START with the read address. */
-static void begin_read(struct i2c_fsm *f, int repeated)
+/* The message on the wire is over with status. last: where the last byte of
+ * a read goes (read after the STOP or repeated START is set up, so no further
+ * byte is clocked), or NULL. Then the next message of the chain after a
+ * repeated START, or STOP and the end of the transaction. */
+static inline __attribute__((always_inline)) enum i2c_fsm_event msg_done(struct i2c_fsm *f, int status, uint8_t *last)
 {
-    f->state = I2C_FSM_ADDR_R;
-    if (repeated) {
-        I2C_FSM_WR(f, PCF_S1, PCF_CTL_REPSTART);
-        I2C_FSM_WR(f, PCF_S0, (uint8_t)((f->x->addr7 << 1) | 1u));
-    } else {
-        I2C_FSM_WR(f, PCF_S0, (uint8_t)((f->x->addr7 << 1) | 1u));
-        I2C_FSM_WR(f, PCF_S1, PCF_CTL_START);
+    struct i2c_xfer *m = f->m, *next = m->more;
+    m->msg_status = status;
+    if (status != DRV_OK && f->first_err == DRV_OK)
+        f->first_err = status;
+    I2C_FSM_WR(f, PCF_S1, next != NULL ? PCF_CTL_REPSTART : PCF_CTL_STOP);
+    if (last != NULL)
+        *last = I2C_FSM_RD(f, PCF_S0);
+    if (next != NULL) {
+        i2c_fsm_send_address(f, next);
+        return I2C_FSM_RUNNING;
     }
+    return finish(f, f->first_err, 0);
 }
 
 enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x)
@@ -63,62 +75,53 @@ enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x)
         return I2C_FSM_BUS_BUSY;
     f->x = x;
     f->need_reset = 0;
-    f->wp = x->wr;
-    f->wr_end = x->wr_len > 0 ? x->wr + x->wr_len : x->wr;
-    f->rp = x->rd;
-    f->rd_fast_end = x->rd_len >= 2u ? x->rd + (x->rd_len - 2u) : x->rd;
-    if (x->wr_len == 0 && x->rd_len > 0) {
-        begin_read(f, 0);
-    } else {
-        f->state = I2C_FSM_DATA_W;
-        I2C_FSM_WR(f, PCF_S0, (uint8_t)(x->addr7 << 1));
-        I2C_FSM_WR(f, PCF_S1, PCF_CTL_START);
-    }
+    f->first_err = DRV_OK;
+    i2c_fsm_send_address(f, x);
+    I2C_FSM_WR(f, PCF_S1, PCF_CTL_START);
     return I2C_FSM_RUNNING;
 }
 
 enum i2c_fsm_event i2c_fsm_step(struct i2c_fsm *f, uint8_t st)
 {
-    struct i2c_xfer *x = f->x;
+    struct i2c_xfer *m = f->m;
 
-    if (x == NULL)
+    if (f->x == NULL)
         return I2C_FSM_SPURIOUS;
     if (st & (PCF_ST_PIN | PCF_ST_LAB | PCF_ST_BER)) {
         if (st & PCF_ST_PIN)      /* byte not done: not ours */
             return I2C_FSM_SPURIOUS;
         if (st & PCF_ST_LAB)      /* another master won: we no longer drive the bus */
-            return finish(f, DRV_ERR_ARB, 1);
-        return finish(f, DRV_ERR_TIMEOUT, 1);   /* BER: misplaced START/STOP on the bus */
+            return fail_all(f, DRV_ERR_ARB);
+        return fail_all(f, DRV_ERR_TIMEOUT);   /* BER: misplaced START/STOP on the bus */
     }
 
     switch (f->state) {
     case I2C_FSM_DATA_W:
         if (st & PCF_ST_LRB)
-            return stop(f, DRV_ERR_ABSENT);
+            return msg_done(f, DRV_ERR_ABSENT, NULL);
         if (f->wp < f->wr_end) {
             I2C_FSM_WR(f, PCF_S0, *f->wp++);
             return I2C_FSM_RUNNING;
         }
-        if (x->rd_len > 0) {
-            begin_read(f, 1);
+        if (m->rd_len > 0) {      /* the read part, after a repeated START */
+            f->state = I2C_FSM_ADDR_R;
+            I2C_FSM_WR(f, PCF_S1, PCF_CTL_REPSTART);
+            I2C_FSM_WR(f, PCF_S0, (uint8_t)((m->addr7 << 1) | 1u));
             return I2C_FSM_RUNNING;
         }
-        return stop(f, DRV_OK);
+        return msg_done(f, DRV_OK, NULL);
     case I2C_FSM_ADDR_R:
         if (st & PCF_ST_LRB)
-            return stop(f, DRV_ERR_ABSENT);
+            return msg_done(f, DRV_ERR_ABSENT, NULL);
         f->state = I2C_FSM_DATA_R;
-        if (x->rd_len == 1)
+        if (m->rd_len == 1)
             I2C_FSM_WR(f, PCF_S1, PCF_CTL_NACK);   /* the only byte is the last */
         (void)I2C_FSM_RD(f, PCF_S0);               /* dummy read: clocks in byte 0 */
         return I2C_FSM_RUNNING;
     case I2C_FSM_DATA_R:
-        if (f->rp + 1 >= x->rd + x->rd_len) {
-            I2C_FSM_WR(f, PCF_S1, PCF_CTL_STOP);   /* before the read: no more clocks */
-            *f->rp = I2C_FSM_RD(f, PCF_S0);
-            return finish(f, DRV_OK, 0);
-        }
-        if (f->rp + 2 == x->rd + x->rd_len)
+        if (f->rp + 1 >= m->rd + m->rd_len)
+            return msg_done(f, DRV_OK, f->rp);
+        if (f->rp + 2 == m->rd + m->rd_len)
             I2C_FSM_WR(f, PCF_S1, PCF_CTL_NACK);   /* the next byte is the last */
         *f->rp++ = I2C_FSM_RD(f, PCF_S0);
         return I2C_FSM_RUNNING;
@@ -131,6 +134,6 @@ struct i2c_xfer *i2c_fsm_abort(struct i2c_fsm *f)
 {
     struct i2c_xfer *x = f->x;
     if (x != NULL)
-        (void)finish(f, DRV_ERR_TIMEOUT, 1);
+        (void)fail_all(f, DRV_ERR_TIMEOUT);
     return x;
 }

@@ -64,6 +64,8 @@ enum i2c_fsm_event {
 struct i2c_fsm {
     volatile uint8_t *base;    /* S0 at base[0], S1 at base[1] */
     struct i2c_xfer *x;        /* the transaction on the wire, or NULL */
+    struct i2c_xfer *m;        /* its message on the wire (x or one of x->more) */
+    int first_err;             /* the first failed message's status */
     uint8_t state;             /* enum i2c_fsm_state */
     uint8_t need_reset;        /* the result requires a controller reset */
     /* Cursors, so the per-byte path does no index arithmetic. */
@@ -71,6 +73,7 @@ struct i2c_fsm {
     const uint8_t *wr_end;
     uint8_t *rp;               /* where the byte being received goes */
     uint8_t *rd_fast_end;      /* rp below this: neither of the last two bytes */
+    uint8_t read_addr;         /* address byte of the read part after the write, 0: none */
 };
 
 #ifdef I2C_FSM_FAKE_HW
@@ -88,9 +91,32 @@ void i2c_fake_wr(struct i2c_fsm *f, unsigned reg, uint8_t v);
  * not read back 0x80 after the reset write (no PCF8584 there). */
 int i2c_fsm_reset(struct i2c_fsm *f, uint8_t own_addr, uint8_t vector);
 
-/* Starts x (lengths already checked). I2C_FSM_RUNNING, or I2C_FSM_BUS_BUSY
- * (nothing sent; x not taken). */
+/* Starts x and its chain x->more (lengths already checked). I2C_FSM_RUNNING,
+ * or I2C_FSM_BUS_BUSY (nothing sent; x not taken). */
 enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x);
+
+/* Points the cursors at message m and sends its address (the START or
+ * repeated START condition has been set up by the caller). */
+static inline __attribute__((always_inline)) void i2c_fsm_send_address(struct i2c_fsm *f,
+                                                                       struct i2c_xfer *m)
+{
+    uint8_t a = (uint8_t)(m->addr7 << 1);
+    f->m = m;
+    f->wp = m->wr;
+    f->wr_end = m->wr_len > 0 ? m->wr + m->wr_len : m->wr;
+    f->rp = m->rd;
+    f->rd_fast_end = m->rd_len >= 2u ? m->rd + (m->rd_len - 2u) : m->rd;
+    f->read_addr = 0;
+    if (m->wr_len == 0 && m->rd_len > 0) {
+        f->state = I2C_FSM_ADDR_R;
+        a |= 1u;
+    } else {
+        f->state = I2C_FSM_DATA_W;
+        if (m->rd_len > 0)
+            f->read_addr = (uint8_t)(a | 1u);
+    }
+    I2C_FSM_WR(f, PCF_S0, a);
+}
 
 /* One controller interrupt, st = the status register read in it (PIN and
  * the error bits are checked here). I2C_FSM_DONE ends f->x (status set, f->x
@@ -99,37 +125,65 @@ enum i2c_fsm_event i2c_fsm_start(struct i2c_fsm *f, struct i2c_xfer *x);
 enum i2c_fsm_event i2c_fsm_step(struct i2c_fsm *f, uint8_t st);
 
 /* One controller interrupt. The common cases are inline: a byte acknowledged
- * in the middle of a write (the address included), a byte in the middle of a
- * read, the read address of a read of 3 bytes or more (about 25
- * instructions instead of about 65 through the general step); the start of
- * the read part, the last two bytes of a read, the end and the errors go to
- * i2c_fsm_step. */
-static inline enum i2c_fsm_event i2c_fsm_interrupt(struct i2c_fsm *f)
+ * in the middle of a write (the address included), the repeated START of the
+ * read part, a byte of a read but the last, the read address of a read of 3
+ * bytes or more (about 25 instructions instead of about 65 through the
+ * general step); the last byte, the end of a message, a short read and the
+ * errors go to i2c_fsm_step. Both make the same register accesses. */
+static inline __attribute__((always_inline)) enum i2c_fsm_event i2c_fsm_interrupt(struct i2c_fsm *f)
 {
     uint8_t st;
     if (f->x == NULL)
         return I2C_FSM_SPURIOUS;
     st = I2C_FSM_RD(f, PCF_S1);
-    if (!(st & (PCF_ST_PIN | PCF_ST_LAB | PCF_ST_BER | PCF_ST_LRB))) {
-        if (f->state == I2C_FSM_DATA_R && f->rp < f->rd_fast_end) {
-            *f->rp++ = I2C_FSM_RD(f, PCF_S0);      /* and the next byte starts */
-            return I2C_FSM_RUNNING;
-        }
-        if (f->state == I2C_FSM_DATA_W && f->wp < f->wr_end) {
-            I2C_FSM_WR(f, PCF_S0, *f->wp++);
-            return I2C_FSM_RUNNING;
-        }
-        if (f->state == I2C_FSM_ADDR_R && f->rp < f->rd_fast_end) {
-            f->state = I2C_FSM_DATA_R;         /* 3 bytes or more: no NACK yet */
-            (void)I2C_FSM_RD(f, PCF_S0);       /* dummy read: clocks in byte 0 */
-            return I2C_FSM_RUNNING;
+    if (!(st & (PCF_ST_PIN | PCF_ST_LAB | PCF_ST_BER))) {
+        if (f->state == I2C_FSM_DATA_R) {
+            /* Receiving: LRB is the acknowledge we sent, not an error. */
+            if (f->rp < f->rd_fast_end) {
+                *f->rp++ = I2C_FSM_RD(f, PCF_S0);  /* and the next byte starts */
+                return I2C_FSM_RUNNING;
+            }
+            if (f->rp == f->rd_fast_end && f->rp != f->m->rd) {
+                I2C_FSM_WR(f, PCF_S1, PCF_CTL_NACK);   /* the next byte is the last */
+                *f->rp++ = I2C_FSM_RD(f, PCF_S0);
+                return I2C_FSM_RUNNING;
+            }
+            if (f->m->more != NULL && f->rp > f->rd_fast_end) {
+                /* The last byte, and the chain goes on: repeated START set up
+                 * before the read (no further byte is clocked), then the next
+                 * message's address (as i2c_fsm_step's end of a message). */
+                struct i2c_xfer *m = f->m;
+                I2C_FSM_WR(f, PCF_S1, PCF_CTL_REPSTART);
+                *f->rp = I2C_FSM_RD(f, PCF_S0);
+                m->msg_status = DRV_OK;
+                i2c_fsm_send_address(f, m->more);
+                return I2C_FSM_RUNNING;
+            }
+        } else if (!(st & PCF_ST_LRB)) {           /* acknowledged */
+            if (f->state == I2C_FSM_DATA_W) {
+                if (f->wp < f->wr_end) {
+                    I2C_FSM_WR(f, PCF_S0, *f->wp++);
+                    return I2C_FSM_RUNNING;
+                }
+                if (f->read_addr != 0) {               /* the read part: repeated START */
+                    f->state = I2C_FSM_ADDR_R;
+                    I2C_FSM_WR(f, PCF_S1, PCF_CTL_REPSTART);
+                    I2C_FSM_WR(f, PCF_S0, f->read_addr);
+                    return I2C_FSM_RUNNING;
+                }
+            } else if (f->state == I2C_FSM_ADDR_R && f->rp < f->rd_fast_end) {
+                f->state = I2C_FSM_DATA_R;         /* 3 bytes or more: no NACK yet */
+                (void)I2C_FSM_RD(f, PCF_S0);       /* dummy read: clocks in byte 0 */
+                return I2C_FSM_RUNNING;
+            }
         }
     }
     return i2c_fsm_step(f, st);
 }
 
-/* Abandons the transaction on the wire (deadline passed): x->status =
- * DRV_ERR_TIMEOUT; returns the transaction or NULL. The caller resets. */
+/* Abandons the transaction on the wire (deadline passed): x->status and the
+ * msg_status of the messages not done = DRV_ERR_TIMEOUT; returns the
+ * transaction or NULL. The caller resets. */
 struct i2c_xfer *i2c_fsm_abort(struct i2c_fsm *f);
 
 #endif /* DRIVERS_I2C_FSM_H */

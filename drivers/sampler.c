@@ -17,6 +17,8 @@
  * (a few ms, i2c.c), this only guards against a starved service thread. */
 #define SAMPLER_WAIT_MS 500u
 #define SAMPLER_PERIOD_MAX_MS 60000u
+#define SAMPLER_CHECK_SWEEPS 4u
+#define SAMPLER_WAIT_TICKS ((SAMPLER_WAIT_MS * K_TICK_HZ + 999u) / 1000u)
 
 static struct sensor_snapshot sampler_latest;
 static struct k_thread sampler_thread;
@@ -27,27 +29,30 @@ static uint32_t sampler_overrun_count;
 
 struct sweep_slot {
     struct i2c_xfer x;
-    uint8_t control;
     uint8_t rd[ANALOG_CHIP_READ_LEN];
 };
 
-/* One sweep at a time (the sampler thread, or a measurement while it is
- * stopped): the slots are static so a sweep does not clear them on a stack. */
+/* One sweep at a time: the slots are static (a sweep does not clear them on
+ * a stack) and sweep_in_flight guards them. */
 static struct sweep_slot sweep_slots[SAMPLER_XFERS];
-static struct k_mutex sweep_lock;
-static struct k_sem sweep_done;
+static struct k_mutex sweep_lock;    /* one blocking sampler_sweep caller at a time */
+static struct k_sem sweep_done;      /* a sweep ended (posted while sweep_waiter) */
 static uint8_t sweep_ready;
-static unsigned sweep_left;   /* transactions still running; written with interrupts masked */
+static volatile uint8_t sweep_in_flight, sweep_waiter;
+static unsigned sweep_left;   /* chains still running + 1; written with interrupts masked */
+static k_ticks_t sweep_start_tick;
+static struct sensor_snapshot sweep_out;   /* built at the end of the sweep in flight */
+static uint32_t sweep_failed_last;         /* failed reads of the last published sweep */
+static k_ticks_t sweep_ticks_last = 1u;    /* how long the last sweep took, ticks (>= 1) */
+/* When the thread's next sweep is due; read and written with interrupts masked. */
+static k_ticks_t sampler_next;
+/* The chains (one per bus) as built for the chip locations of these probe
+ * generations; rebuilt when analog_init or bio_init probed again. */
+static struct i2c_xfer *sweep_chain[I2C_BUS_COUNT];
+static uint32_t sweep_analog_gen, sweep_bio_gen;
+static uint8_t sweep_built;
 
-/* The last transaction of a sweep wakes the sweeping thread: one wake-up per
- * sweep, not one per chip. Runs in the I2C handler or service thread. */
-static void sweep_xfer_done(struct i2c_xfer *x, void *arg)
-{
-    (void)x;
-    (void)arg;
-    if (--sweep_left == 0u)
-        (void)k_sem_post(&sweep_done);
-}
+static int sweep_begin(void);
 
 /* In 32 bits (a 64-bit division costs hundreds of instructions on the CPU32). */
 static uint32_t ticks_to_us(k_ticks_t t)
@@ -66,125 +71,203 @@ static void sweep_init_once(void)
     k_arch_irq_restore(s);
 }
 
-/* Fills and submits every slot; returns how many are running. A bus runs its
- * queue in order, so only the last slot queued on each bus gets the callback
- * (the others end without any kernel call in the interrupt handler). */
-static unsigned sweep_submit(void)
+/* Unpacks the slots into sweep_out and publishes it (interrupts masked). */
+static void sweep_publish(void)
 {
-    unsigned running = 0, bus_of[SAMPLER_XFERS];
-    int last_on_bus[I2C_BUS_COUNT];
-    uint32_t s;
+    struct sensor_snapshot *out = &sweep_out;
+    uint8_t *dst = out->analog;
+    uint32_t valid = SAMPLER_VALID_BININ, bit = 0xFul, failed = 0;
+    int err = 0;
+
+    /* Unpacked with no per-byte index arithmetic (this runs every sweep). */
+    for (unsigned i = 0; i < ANALOG_CHIPS; i++, dst += 4, bit <<= 4) {
+        const struct sweep_slot *sl = &sweep_slots[i];
+        if (sl->x.msg_status != DRV_OK) {
+            err = sl->x.msg_status;
+            failed++;
+            continue;
+        }
+        dst[0] = sl->rd[1];              /* rd[0]: the previous conversion */
+        dst[1] = sl->rd[2];
+        dst[2] = sl->rd[3];
+        dst[3] = sl->rd[4];
+        valid |= bit;
+    }
+    for (unsigned c = 0; c < BIO_CHIPS; c++) {
+        const struct sweep_slot *sl = &sweep_slots[ANALOG_CHIPS + c];
+        if (sl->x.msg_status != DRV_OK) {
+            err = sl->x.msg_status;
+            failed++;
+            continue;
+        }
+        if (c == 0)
+            out->bio = (uint16_t)((out->bio & 0xFF00u) | sl->rd[0]);
+        else
+            out->bio = (uint16_t)((out->bio & 0x00FFu) | ((unsigned)sl->rd[0] << 8));
+        valid |= SAMPLER_VALID_BIO0 << c;
+    }
+    out->valid = valid;
+    out->last_error = (int8_t)err;
+    out->ticks = sweep_start_tick;
+    out->time_us = ticks_to_us(sweep_start_tick);
+    sweep_ticks_last = k_ticks() - sweep_start_tick + 1u;
+    out->sweep_us = ticks_to_us(sweep_ticks_last - 1u);
+    out->seq = sampler_latest.seq + 1u;
+    sampler_latest = *out;
+    sweep_failed_last = failed;
+}
+
+/* The sweep ended (the last chain's callback, or sweep_begin when nothing
+ * could be queued; interrupts masked): publish, wake a blocking caller, and
+ * start the thread's next sweep at once if it is already due, so sweeps at a
+ * period shorter than a sweep run back to back without the thread. */
+static void sweep_complete(int may_restart)
+{
+    sweep_publish();
+    sweep_in_flight = 0;
+    if (sweep_waiter)
+        (void)k_sem_post(&sweep_done);
+    if (may_restart && sampler_running && (int32_t)(k_ticks() - sampler_next) >= 0) {
+        sampler_next += sampler_period_ticks;
+        if ((int32_t)(k_ticks() - sampler_next) > 0) {
+            sampler_overrun_count++;
+            sampler_next = k_ticks() + sampler_period_ticks;
+        }
+        (void)sweep_begin();
+    }
+}
+
+/* The last bus to finish ends the sweep: one wake-up (or none) per sweep, not
+ * one per chip. Runs in the I2C handler or service thread, interrupts masked. */
+static void sweep_xfer_done(struct i2c_xfer *x, void *arg)
+{
+    (void)x;
+    (void)arg;
+    if (--sweep_left == 0u)
+        sweep_complete(1);
+}
+
+/* Builds one chain of messages per bus: the chips' reads linked with
+ * repeated STARTs (i2c.h, `more`), so a sweep costs one queue entry, one
+ * start and one completion per bus instead of one per chip. A chip not found
+ * gets its error as msg_status and no message. */
+static void sweep_build(void)
+{
+    struct i2c_xfer *tail[I2C_BUS_COUNT] = { NULL };
 
     for (unsigned b = 0; b < I2C_BUS_COUNT; b++)
-        last_on_bus[b] = -1;
+        sweep_chain[b] = NULL;
     for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
         struct sweep_slot *sl = &sweep_slots[i];
+        unsigned bus = 0;
         uint8_t addr = 0;
+        const uint8_t *control = NULL;
         int rc;
-        sl->x.rd = sl->rd;
-        sl->x.next = NULL;
-        sl->x.done = NULL;
+        sl->x = (struct i2c_xfer){ .rd = sl->rd };
         if (i < ANALOG_CHIPS) {
-            rc = analog_chip_location(i, &bus_of[i], &addr, &sl->control);
-            sl->x.wr = &sl->control;
+            rc = analog_chip_location(i, &bus, &addr, &control);
+            sl->x.wr = control;
             sl->x.wr_len = 1;
             sl->x.rd_len = ANALOG_CHIP_READ_LEN;
         } else {
-            rc = bio_chip_location(i - ANALOG_CHIPS, &bus_of[i], &addr);
-            sl->x.wr = NULL;
-            sl->x.wr_len = 0;
+            rc = bio_chip_location(i - ANALOG_CHIPS, &bus, &addr);
             sl->x.rd_len = 1;
         }
         sl->x.addr7 = addr;
-        sl->x.status = rc;               /* not I2C_PENDING: not queued yet */
-        if (rc == DRV_OK)
-            last_on_bus[bus_of[i]] = (int)i;
-    }
-    sweep_left = 1u;                     /* 1: none can finish the count early */
-    for (unsigned b = 0; b < I2C_BUS_COUNT; b++) {
-        if (last_on_bus[b] >= 0) {
-            sweep_slots[last_on_bus[b]].x.done = sweep_xfer_done;
-            sweep_left++;
-        }
-    }
-    for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-        struct sweep_slot *sl = &sweep_slots[i];
-        int rc;
-        if (sl->x.status != DRV_OK)
+        sl->x.msg_status = rc;
+        if (rc != DRV_OK)
             continue;
-        rc = i2c_submit(bus_of[i], &sl->x);
-        if (rc == DRV_OK) {
-            running++;
-        } else {
-            sl->x.status = rc;
-            if (sl->x.done != NULL) {    /* its bus' callback will not come */
-                s = k_arch_irq_save();
-                sweep_left--;
-                k_arch_irq_restore(s);
-            }
+        if (tail[bus] != NULL)
+            tail[bus]->more = &sl->x;
+        else
+            sweep_chain[bus] = &sl->x;
+        tail[bus] = &sl->x;
+    }
+    sweep_analog_gen = analog_generation();
+    sweep_bio_gen = bio_generation();
+    sweep_built = 1;
+}
+
+/* Starts a sweep: every bus's chain queued; it ends in sweep_complete.
+ * DRV_OK, or DRV_ERR_BUSY while one is in flight. Thread or interrupt context. */
+static int sweep_begin(void)
+{
+    uint32_t s = k_arch_irq_save();
+
+    if (sweep_in_flight) {
+        k_arch_irq_restore(s);
+        return DRV_ERR_BUSY;
+    }
+    sweep_in_flight = 1;
+    sweep_left = 1u;                     /* 1: no chain can end the sweep early */
+    k_arch_irq_restore(s);
+
+    if (!sweep_built || sweep_analog_gen != analog_generation() || sweep_bio_gen != bio_generation())
+        sweep_build();
+    sweep_start_tick = k_ticks();
+    sweep_out.binin = binin_read_all();  /* the binary inputs while the bus works */
+    for (unsigned bus = 0; bus < I2C_BUS_COUNT; bus++) {
+        struct i2c_xfer *x = sweep_chain[bus];
+        int rc;
+        if (x == NULL)
+            continue;
+        x->done = sweep_xfer_done;
+        x->status = 0;
+        x->next = NULL;
+        s = k_arch_irq_save();
+        sweep_left++;
+        k_arch_irq_restore(s);
+        rc = i2c_submit(bus, x);
+        if (rc != DRV_OK) {
+            for (struct i2c_xfer *m = x; m != NULL; m = m->more)
+                m->msg_status = rc;
+            s = k_arch_irq_save();
+            sweep_left--;
+            k_arch_irq_restore(s);
         }
     }
     s = k_arch_irq_save();
     if (--sweep_left == 0u)
-        (void)k_sem_post(&sweep_done);
+        sweep_complete(0);               /* nothing queued, or all ended already */
     k_arch_irq_restore(s);
-    return running;
+    return DRV_OK;
 }
 
 int sampler_sweep(struct sensor_snapshot *out)
 {
-    unsigned failed = 0;
-    k_ticks_t start;
+    k_ticks_t t0 = k_ticks(), deadline = t0 + SAMPLER_WAIT_TICKS;
+    int failed = (int)SAMPLER_XFERS;
+    uint32_t s;
 
     sweep_init_once();
-    if (k_mutex_lock_ticks(&sweep_lock, k_ms_to_ticks(SAMPLER_WAIT_MS)) != K_OK)
-        return (int)SAMPLER_XFERS;
-    start = k_ticks();
-    (void)k_sem_trywait(&sweep_done);            /* a stale post from a given-up sweep */
-    (void)sweep_submit();
-    /* Binary inputs while the bus works. */
-    out->binin = binin_read_all();
-    out->valid = SAMPLER_VALID_BININ;
-    out->last_error = 0;
-    if (k_sem_wait_ticks(&sweep_done, k_ms_to_ticks(SAMPLER_WAIT_MS)) != K_OK) {
-        /* Only if the I2C service thread is starved: every transaction ends by
-         * its deadline, and the slots must not be reused before. */
-        for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-            while (sweep_slots[i].x.status == I2C_PENDING)
-                (void)k_sleep_ticks(1u);
+    if (k_mutex_lock_ticks(&sweep_lock, SAMPLER_WAIT_TICKS) != K_OK)
+        return failed;
+    s = k_arch_irq_save();
+    sweep_waiter = 1;
+    k_arch_irq_restore(s);
+    (void)k_sem_trywait(&sweep_done);            /* a post from an earlier sweep */
+    /* Wait for a sweep that started at or after t0: start one, or let the one
+     * in flight (the thread's) end and start ours. Every sweep ends by the
+     * I2C deadlines, so this loop ends long before `deadline`. */
+    for (;;) {
+        s = k_arch_irq_save();
+        if (sampler_latest.seq != 0 && (int32_t)(sampler_latest.ticks - t0) >= 0) {
+            *out = sampler_latest;
+            failed = (int)sweep_failed_last;
+            k_arch_irq_restore(s);
+            break;
         }
+        k_arch_irq_restore(s);
+        if ((int32_t)(k_ticks() - deadline) >= 0)
+            break;
+        (void)sweep_begin();                     /* DRV_ERR_BUSY: one is in flight */
+        (void)k_sem_wait_ticks(&sweep_done, deadline - k_ticks());
     }
-    for (unsigned i = 0; i < SAMPLER_XFERS; i++) {
-        const struct sweep_slot *sl = &sweep_slots[i];
-        if (sl->x.status != DRV_OK) {
-            failed++;
-            out->last_error = (int8_t)sl->x.status;
-            continue;
-        }
-        if (i < ANALOG_CHIPS) {
-            for (unsigned k = 0; k < 4u; k++)
-                out->analog[4u * i + k] = sl->rd[k + 1u];
-            out->valid |= 0xFul << (4u * i);
-        } else {
-            unsigned c = i - ANALOG_CHIPS;
-            out->bio = (uint16_t)((out->bio & ~(0xFFu << (8u * c))) | ((unsigned)sl->rd[0] << (8u * c)));
-            out->valid |= SAMPLER_VALID_BIO0 << c;
-        }
-    }
-    out->ticks = start;
-    out->time_us = ticks_to_us(start);
-    out->sweep_us = ticks_to_us(k_ticks() - start);
+    s = k_arch_irq_save();
+    sweep_waiter = 0;
+    k_arch_irq_restore(s);
     (void)k_mutex_unlock(&sweep_lock);
-    return (int)failed;
-}
-
-static void publish(const struct sensor_snapshot *s)
-{
-    uint32_t st = k_arch_irq_save();
-    uint32_t seq = sampler_latest.seq + 1u;
-    sampler_latest = *s;
-    sampler_latest.seq = seq;
-    k_arch_irq_restore(st);
+    return failed;
 }
 
 void sampler_read(struct sensor_snapshot *out)
@@ -194,32 +277,52 @@ void sampler_read(struct sensor_snapshot *out)
     k_arch_irq_restore(st);
 }
 
+/* Starts each sweep when it is due; the sweep itself runs in the I2C
+ * interrupt handler and publishes from there (no wake-up at its end). */
 static void *sampler_main(void *arg)
 {
-    struct sensor_snapshot snap = { 0 };
-    k_ticks_t next = k_ticks();
     (void)arg;
+    sweep_init_once();
     for (;;) {
+        k_ticks_t wake;
+        uint32_t s;
         while (!sampler_running)
             (void)k_sleep_ticks(k_ms_to_ticks(10u));
-        (void)sampler_sweep(&snap);
-        publish(&snap);
-        next += sampler_period_ticks;
-        if ((int32_t)(k_ticks() - next) > 0) {
-            sampler_overrun_count++;
-            next = k_ticks();      /* late: start again from now, do not catch up */
+        s = k_arch_irq_save();
+        if ((int32_t)(k_ticks() - sampler_next) >= 0 && !sweep_in_flight) {
+            sampler_next += sampler_period_ticks;
+            if ((int32_t)(k_ticks() - sampler_next) > 0) {
+                sampler_overrun_count++;     /* late: from now on, do not catch up */
+                sampler_next = k_ticks() + sampler_period_ticks;
+            }
+            k_arch_irq_restore(s);
+            (void)sweep_begin();
+            s = k_arch_irq_save();
         }
-        (void)k_sleep_until(next);
+        /* In flight and due: sweep_complete starts the next one itself (back
+         * to back while the period is shorter than a sweep), so the thread
+         * only looks again after a few sweeps' time, in case the chain of
+         * sweeps stopped (sampler_stop, then sampler_start). */
+        wake = sampler_next;
+        if ((int32_t)(wake - k_ticks()) <= 0)
+            wake = k_ticks() + SAMPLER_CHECK_SWEEPS *
+                   (sampler_period_ticks > sweep_ticks_last ? sampler_period_ticks : sweep_ticks_last);
+        k_arch_irq_restore(s);
+        (void)k_sleep_until(wake);
     }
     return NULL;
 }
 
 int sampler_start(unsigned period_ms)
 {
+    uint32_t s;
     if (period_ms < 1u || period_ms > SAMPLER_PERIOD_MAX_MS)
         return DRV_ERR_RANGE;
+    s = k_arch_irq_save();
     sampler_period_ticks = k_ms_to_ticks(period_ms);
+    sampler_next = k_ticks();
     sampler_running = 1;
+    k_arch_irq_restore(s);
     if (!sampler_created) {
         sampler_created = 1;
         if (k_thread_create(&sampler_thread, "sampler", sampler_main, NULL, sampler_stack,

@@ -5,9 +5,11 @@
  * touching the bus: sampler_read copies it with interrupts masked (about 60
  * bytes), so a copy is never half old, half new.
  *
- * One sweep queues all chip reads at once (one auto-increment read per
- * PCF8591, one read per PCF8574A); the I2C interrupt handler runs them back
- * to back, and the thread sleeps until the last one ends.
+ * One sweep is one I2C transaction per bus: the chip reads (one
+ * auto-increment read per PCF8591, one read per PCF8574A) chained with
+ * repeated STARTs. The thread only starts a sweep when it is due; the I2C
+ * interrupt handler runs it and publishes the snapshot at its end, and starts
+ * the next one at once when the period is shorter than a sweep.
  */
 #ifndef DRIVERS_SAMPLER_H
 #define DRIVERS_SAMPLER_H
@@ -45,9 +47,10 @@ void sampler_stop(void);
 /* Copies the latest snapshot (seq 0 before the first sweep). O(1), any context. */
 void sampler_read(struct sensor_snapshot *out);
 
-/* One sweep right now in the caller's thread, into *out (not published).
- * Used by the sampler thread and by measurements. Returns the number of
- * failed reads (0 = all valid). */
+/* Waits (bounded) for a sweep that starts now (or, if one is running, for
+ * the next one) and copies it into *out; it is published like every sweep.
+ * Returns the number of failed chip reads (0 = all valid; 8 if no sweep came
+ * in time, which the I2C deadlines rule out). Thread context. */
 int sampler_sweep(struct sensor_snapshot *out);
 
 /* Sweeps that overran their period, and sweeps done. */

@@ -20,6 +20,10 @@
  *                      time per sweep and CPU busy fraction from an idle-loop
  *                      counter, "=bench N ticks us_per_sweep busy_permille failed
  *                      idle_loops busy_loops context_switches i2c_interrupts"
+ *   benchrd N          the same with N 64-byte reads (the per-byte cost alone)
+ *   benchsamp P N      the sampler thread at P ms for N periods: "=benchsamp P ticks
+ *                      sweeps busy_permille cpu_us_per_sweep overruns"
+ *   benchsleep N       the same with a sleep of N ticks (checks the method: ~0)
  *   uptime             "=uptime ms"
  *
  * Numbers are decimal or 0x-hex.
@@ -91,6 +95,16 @@ static int sleeps(unsigned n)
 {
     (void)k_sleep_ticks(n);
     return 0;
+}
+
+/* n reads of 64 bytes from the first PCF8574A: the per-byte cost alone. */
+static int long_reads(unsigned n)
+{
+    static uint8_t buf[64];
+    int failed = 0;
+    for (unsigned i = 0; i < n; i++)
+        failed += i2c_transfer(I2C_BUS_A, 0x38, NULL, 0, buf, sizeof buf) != DRV_OK;
+    return failed;
 }
 
 static int sweeps(unsigned n)
@@ -171,6 +185,37 @@ static void cmd_bench(long n, int (*fn)(unsigned))
              (unsigned long)busy_count, (unsigned long)(sw1 - sw0),
              (unsigned long)(st1.interrupts - st0.interrupts));
     (void)sampler_start(IOTEST_SAMPLER_MS);
+}
+
+/* The sampler thread at period_ms for `periods` periods: CPU per sweep from
+ * the idle-loop deficit over the whole window (thread start, interrupt
+ * handler, publication):
+ * "=benchsamp period_ms ticks sweeps busy_permille cpu_us_per_sweep overruns" */
+static void cmd_benchsamp(unsigned period_ms, unsigned periods)
+{
+    struct sensor_snapshot s0, s1;
+    k_ticks_t window = k_ms_to_ticks(period_ms * periods), calib;
+    uint32_t busy_count, idle, over0 = sampler_overruns(), busy_permille, sweeps_done, cpu_us;
+
+    (void)sampler_start(period_ms);
+    (void)k_sleep_ticks(k_ms_to_ticks(3u * period_ms));  /* settle into the period */
+    sampler_read(&s0);
+    busy_count = spin_over(&window, NULL, 0, NULL);
+    sampler_read(&s1);
+    (void)sampler_start(IOTEST_SAMPLER_MS);
+    sampler_stop();
+    (void)k_sleep_ticks(k_ms_to_ticks(50u));
+    calib = window;
+    idle = spin_over(&calib, NULL, 0, NULL);
+    (void)sampler_start(IOTEST_SAMPLER_MS);
+    sweeps_done = s1.seq - s0.seq;
+    busy_permille = idle == 0 || busy_count > idle ? 1000u
+        : (uint32_t)(1000u - (uint32_t)(((uint64_t)busy_count * 1000u) / idle));
+    cpu_us = sweeps_done == 0 ? 0
+        : (uint32_t)(((uint64_t)window * 1000000u / K_TICK_HZ) * busy_permille / 1000u / sweeps_done);
+    k_printf("=benchsamp %u %lu %lu %lu %lu %lu\n", period_ms, (unsigned long)window,
+             (unsigned long)sweeps_done, (unsigned long)busy_permille, (unsigned long)cpu_us,
+             (unsigned long)(sampler_overruns() - over0));
 }
 
 static void execute(char *line)
@@ -273,6 +318,16 @@ static void execute(char *line)
             return;
         }
         cmd_bench(a[0], sweeps);
+    } else if (streq(argv[0], "benchrd")) {
+        NEED(1);
+        cmd_bench(a[0], long_reads);
+    } else if (streq(argv[0], "benchsamp")) {
+        NEED(2);
+        if (a[0] < 1 || a[0] > 1000 || a[1] < 1 || a[1] > 1000) {
+            k_printf("=err benchsamp 1..1000 1..1000\n");
+            return;
+        }
+        cmd_benchsamp((unsigned)a[0], (unsigned)a[1]);
     } else if (streq(argv[0], "benchsleep")) {
         NEED(1);
         cmd_bench(a[0], sleeps);

@@ -284,6 +284,102 @@ static void test_reset_sequence(void **state)
     assert_int_equal(i2c_fsm_reset(&fsm, 0x55, 27), -1);    /* floating bus: no controller */
 }
 
+/* The sampler's chain: a PCF8591 read (control byte, repeated START, 5
+ * bytes) and a PCF8574A read, one transaction, repeated START in between. */
+static void test_chain_of_two_messages(void **state)
+{
+    const uint8_t ctl = 0x04;
+    uint8_t ad[5] = { 0 }, bio = 0;
+    struct i2c_xfer second = { .addr7 = 0x38, .rd = &bio, .rd_len = 1 };
+    struct i2c_xfer x = { .addr7 = 0x48, .wr = &ctl, .wr_len = 1, .rd = ad, .rd_len = 5,
+                          .more = &second };
+    const struct step s[] = {
+        R(S1, ST_FREE), W(S0, 0x90), W(S1, 0xCD),
+        IRQ, R(S1, ST_ACKED), W(S0, 0x04),
+        IRQ, R(S1, ST_ACKED), W(S1, 0x4D), W(S0, 0x91),
+        IRQ, R(S1, ST_ACKED), R(S0, 0x91),
+        IRQ, R(S1, ST_ACKED), R(S0, 10),
+        IRQ, R(S1, ST_ACKED), R(S0, 11),
+        IRQ, R(S1, ST_ACKED), R(S0, 12),
+        IRQ, R(S1, ST_ACKED), W(S1, 0x48), R(S0, 13),
+        IRQ, R(S1, ST_NACKED), W(S1, 0x4D), R(S0, 14), W(S0, 0x71),   /* next: repeated START */
+        IRQ, R(S1, ST_ACKED), W(S1, 0x48), R(S0, 0x71),
+        IRQ, R(S1, ST_NACKED), W(S1, 0xCB), R(S0, 0x5A),
+    };
+    (void)state;
+    assert_int_equal(run(&fsm, &x, s, sizeof s / sizeof s[0]), I2C_FSM_DONE);
+    assert_int_equal(x.status, DRV_OK);
+    assert_int_equal(x.msg_status, DRV_OK);
+    assert_int_equal(second.msg_status, DRV_OK);
+    assert_memory_equal(ad, ((uint8_t[]){ 10, 11, 12, 13, 14 }), 5);
+    assert_int_equal(bio, 0x5A);
+}
+
+/* An absent chip in the middle does not end the chain. */
+static void test_chain_goes_on_after_a_nack(void **state)
+{
+    uint8_t a = 0, c = 0;
+    struct i2c_xfer third = { .addr7 = 0x39, .rd = &c, .rd_len = 1 };
+    struct i2c_xfer second = { .addr7 = 0x4A, .more = &third };
+    struct i2c_xfer x = { .addr7 = 0x38, .rd = &a, .rd_len = 1, .more = &second };
+    const struct step s[] = {
+        R(S1, ST_FREE), W(S0, 0x71), W(S1, 0xCD),
+        IRQ, R(S1, ST_ACKED), W(S1, 0x48), R(S0, 0x71),
+        IRQ, R(S1, ST_NACKED), W(S1, 0x4D), R(S0, 1), W(S0, 0x94),
+        IRQ, R(S1, ST_NACKED), W(S1, 0x4D), W(S0, 0x73),             /* 0x4A absent */
+        IRQ, R(S1, ST_ACKED), W(S1, 0x48), R(S0, 0x73),
+        IRQ, R(S1, ST_NACKED), W(S1, 0xCB), R(S0, 3),
+    };
+    (void)state;
+    assert_int_equal(run(&fsm, &x, s, sizeof s / sizeof s[0]), I2C_FSM_DONE);
+    assert_int_equal(x.status, DRV_ERR_ABSENT);        /* the first error of the chain */
+    assert_int_equal(x.msg_status, DRV_OK);
+    assert_int_equal(second.msg_status, DRV_ERR_ABSENT);
+    assert_int_equal(third.msg_status, DRV_OK);
+    assert_int_equal(a, 1);
+    assert_int_equal(c, 3);
+}
+
+/* A lost bus ends the message on the wire and every one after it. */
+static void test_chain_arbitration_lost_fails_the_rest(void **state)
+{
+    uint8_t a = 0;
+    struct i2c_xfer third = { .addr7 = 0x39 };
+    struct i2c_xfer second = { .addr7 = 0x4A, .more = &third };
+    struct i2c_xfer x = { .addr7 = 0x38, .rd = &a, .rd_len = 1, .more = &second };
+    const struct step s[] = {
+        R(S1, ST_FREE), W(S0, 0x71), W(S1, 0xCD),
+        IRQ, R(S1, ST_ACKED), W(S1, 0x48), R(S0, 0x71),
+        IRQ, R(S1, ST_NACKED), W(S1, 0x4D), R(S0, 7), W(S0, 0x94),
+        IRQ, R(S1, PCF_ST_LAB),
+    };
+    (void)state;
+    assert_int_equal(run(&fsm, &x, s, sizeof s / sizeof s[0]), I2C_FSM_DONE);
+    assert_int_equal(x.status, DRV_ERR_ARB);
+    assert_int_equal(x.msg_status, DRV_OK);
+    assert_int_equal(second.msg_status, DRV_ERR_ARB);
+    assert_int_equal(third.msg_status, DRV_ERR_ARB);
+    assert_int_equal(fsm.need_reset, 1);
+}
+
+static void test_chain_abort_times_out_the_rest(void **state)
+{
+    struct i2c_xfer third = { .addr7 = 0x39 };
+    struct i2c_xfer second = { .addr7 = 0x4A, .more = &third };
+    struct i2c_xfer x = { .addr7 = 0x38, .more = &second };
+    const struct step s[] = {
+        R(S1, ST_FREE), W(S0, 0x70), W(S1, 0xCD),
+        IRQ, R(S1, ST_ACKED), W(S1, 0x4D), W(S0, 0x94),             /* probe 0x38 done */
+    };
+    (void)state;
+    assert_int_equal(run(&fsm, &x, s, sizeof s / sizeof s[0]), I2C_FSM_RUNNING);
+    assert_ptr_equal(i2c_fsm_abort(&fsm), &x);
+    assert_int_equal(x.status, DRV_ERR_TIMEOUT);
+    assert_int_equal(x.msg_status, DRV_OK);
+    assert_int_equal(second.msg_status, DRV_ERR_TIMEOUT);
+    assert_int_equal(third.msg_status, DRV_ERR_TIMEOUT);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -300,6 +396,10 @@ int main(void)
         cmocka_unit_test_setup(test_bus_error_needs_reset, setup),
         cmocka_unit_test_setup(test_spurious_interrupts_are_ignored, setup),
         cmocka_unit_test_setup(test_reset_sequence, setup),
+        cmocka_unit_test_setup(test_chain_of_two_messages, setup),
+        cmocka_unit_test_setup(test_chain_goes_on_after_a_nack, setup),
+        cmocka_unit_test_setup(test_chain_arbitration_lost_fails_the_rest, setup),
+        cmocka_unit_test_setup(test_chain_abort_times_out_the_rest, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

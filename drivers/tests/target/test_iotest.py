@@ -200,8 +200,26 @@ def test_bad_commands_answer_err(board):
 
 
 def test_snapshot_timing_and_cpu_load(board):
-    """100 back-to-back sweeps (24 analog + 16 binary + 5 binary inputs)."""
-    n, ticks, us, busy, failed = board.ints("bench 100")[:5]
-    assert n == 100 and failed == 0
-    assert us <= 8000, f"full snapshot took {us} us of virtual time (goal 8 ms)"
-    print(f"snapshot: {us} us per sweep, CPU busy {busy / 10:.1f} %")
+    """Full snapshots (24 analog + 16 binary I/O + 5 binary inputs) back to
+    back: the sampler at a 1 ms period restarts each sweep from the I2C
+    interrupt as the previous one ends. Goals (issue 10): <= 8 ms of virtual
+    time per snapshot at 90 kHz SCL, CPU busy <= 15 % meanwhile (idle-loop
+    counter against an equally long idle span)."""
+    period, ticks, sweeps, busy, cpu_us, _ = board.ints("benchsamp 1 300")
+    assert period == 1 and sweeps >= 40
+    us_per_sweep = ticks * 1_000_000 // 1024 // sweeps
+    assert us_per_sweep <= 8000, f"a snapshot took {us_per_sweep} us (goal 8 ms)"
+    assert busy <= 150, f"CPU busy {busy / 10} % during snapshots (goal 15 %)"
+    print(f"snapshot: {us_per_sweep} us, CPU busy {busy / 10:.1f} %, {cpu_us} us CPU per sweep")
+
+
+def test_blocking_sweeps_and_per_byte_cost(board):
+    """sampler_sweep from a thread (one wake-up per sweep) and long reads."""
+    n, ticks, us, busy, failed = board.ints("bench 50")[:5]
+    assert n == 50 and failed == 0 and us <= 8000
+    assert busy < 250
+    words = board.cmd("benchrd 20")                      # replies "=bench ..."
+    assert words[0] == "bench"
+    n, ticks, us, busy, failed = [int(w) for w in words[1:6]]
+    assert failed == 0 and busy < 200
+    assert int(board.cmd("benchsleep 100")[4]) <= 5      # the method itself reads ~0
