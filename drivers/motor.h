@@ -18,7 +18,8 @@
  * per-mille (-1000..1000, negative = reverse). Gains: see motor_set_gains.
  * Returns DRV_ERR_CHANNEL for m >= MOTOR_COUNT, DRV_ERR_RANGE for a value out
  * of range, DRV_ERR_STATE before motor_init (or, for the speed, before the
- * service runs). No call blocks beyond a bounded mutex wait.
+ * service runs). No call blocks: shared state is guarded by short sections
+ * with interrupts masked.
  */
 #ifndef DRIVERS_MOTOR_H
 #define DRIVERS_MOTOR_H
@@ -34,7 +35,8 @@
 
 /* Sets up the TPU channels (PWM at 0 %, QDEC at position 0), brakes all
  * three motors and starts the service thread at MOTOR_DEFAULT_PERIOD_MS.
- * Call after tpu_init and k_init (threads start running at k_start). */
+ * Calls tpu_init itself. Call after k_init (before or after k_start; the
+ * thread runs once the scheduler does). Again = no-op. */
 int motor_init(void);
 
 /* Open loop: signed per-mille of full power, -1000..1000; 0 brakes. Turns

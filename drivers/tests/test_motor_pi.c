@@ -73,6 +73,11 @@ static void test_anti_windup_under_p_saturation(void **state)
         assert_int_equal(motor_pi_step(&pi, 5000, 0, DT_10MS), MOTOR_PI_OUT_MAX);
     assert_int_equal(pi.integral, 0);
     assert_int_equal(motor_pi_step(&pi, 0, 0, DT_10MS), 0);
+    /* The same in reverse. */
+    for (i = 0; i < 100; i++)
+        assert_int_equal(motor_pi_step(&pi, -5000, 0, DT_10MS), -MOTOR_PI_OUT_MAX);
+    assert_int_equal(pi.integral, 0);
+    assert_int_equal(motor_pi_step(&pi, 0, 0, DT_10MS), 0);
 }
 
 /* Saturated by the integral itself: it stops at the limit, and the first
