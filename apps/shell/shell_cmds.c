@@ -63,35 +63,38 @@ static int parse_int(const char *s, int32_t *out)
     return 1;
 }
 
-/* The channel named by the command's first two words ("ad 5"); reports the
- * error itself and returns < 0 when there is none. */
-static int channel_of(const char *line, struct sai_channel *ch)
+/* Whole-string equality (no libc on the target). */
+static int same(const char *a, const char *b)
+{
+    while (*a != '\0' && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+/* The channel named by the command's first two words ("ad 5"), parsed by SAI
+ * from the line; reports the error itself and returns < 0 when there is none. */
+static int channel_of(const char *line, char **argv, struct sai_channel *ch)
 {
     const char *rest;
+    unsigned k;
     int rc = sai_parse_prefix(line, ch, &rest);
-    if (rc < 0) {
-        const char *name = line;
-        unsigned k;
-        /* name the valid numbers of the kind the user meant */
-        for (k = 0; k < SAI_KIND_COUNT; k++) {
-            const struct sai_kind_info *info = sai_kind_info(k);
-            const char *a = name, *b = info->short_name;
-            while (*b != '\0' && *a == *b) {
-                a++;
-                b++;
-            }
-            if (*b == '\0' && (*a == ' ' || *a == '\0')) {
-                reply_error("%s: no such channel (%s %u..%u)", line, info->short_name,
-                            info->first, info->last);
-                return rc;
-            }
+    if (rc >= 0)
+        return rc;
+    for (k = 0; k < SAI_KIND_COUNT; k++) { /* name the numbers the kind has */
+        const struct sai_kind_info *info = sai_kind_info(k);
+        if (same(argv[0], info->short_name)) {
+            reply_error("%s %s: no such channel (%s %u..%u)", argv[0], argv[1],
+                        info->short_name, info->first, info->last);
+            return rc;
         }
-        reply_error("%s: no such channel", line);
     }
+    reply_error("%s %s: no such channel", argv[0], argv[1]);
     return rc;
 }
 
-/* Prints "SHORT N = V" for ch, read back through SAI. */
+/* Prints "SHORT N = V": the answer of every port command. */
 static void print_channel(struct sai_channel ch, int32_t value)
 {
     k_printf("%s %u = %ld\n", sai_kind_info(ch.kind)->short_name, ch.index, (long)value);
@@ -110,7 +113,7 @@ static void cmd_port(int argc, char **argv, const char *line)
     struct sai_channel ch;
     int32_t value;
     int rc;
-    if (channel_of(line, &ch) < 0)
+    if (channel_of(line, argv, &ch) < 0)
         return;
     if (argc == 2) {
         rc = sai_read(ch, &value);
@@ -148,9 +151,9 @@ static void cmd_led(int argc, char **argv, const char *line)
     if (sai_parse("led", &ch) < 0)
         return;
     if (argc == 2) {
-        if (argv[1][0] == 'o' && argv[1][1] == 'n' && argv[1][2] == '\0')
+        if (same(argv[1], "on"))
             value = 1;
-        else if (argv[1][0] == 'o' && argv[1][1] == 'f' && argv[1][2] == 'f' && argv[1][3] == '\0')
+        else if (same(argv[1], "off"))
             value = 0;
         else {
             reply_error("led: '%s': say on or off", argv[1]);
@@ -177,7 +180,7 @@ static void cmd_pwm(int argc, char **argv, const char *line)
     int32_t permille, hz = 0;
     uint32_t hz_now;
     int duty_now, rc;
-    if (channel_of(line, &ch) < 0)
+    if (channel_of(line, argv, &ch) < 0)
         return;
     if (!parse_int(argv[2], &permille)) {
         reply_error("pwm: '%s' is not a number", argv[2]);
@@ -214,7 +217,7 @@ static void cmd_motor(int argc, char **argv, const char *line)
     int32_t permille;
     int rc;
     (void)argc;
-    if (channel_of(line, &ch) < 0)
+    if (channel_of(line, argv, &ch) < 0)
         return;
     if (!parse_int(argv[2], &permille)) {
         reply_error("motor: '%s' is not a number", argv[2]);
@@ -243,7 +246,7 @@ static void cmd_speed(int argc, char **argv, const char *line)
     (void)argc;
     (void)line;
     (void)k_snprintf(name, sizeof name, "motor %s", argv[1]); /* the channel as SAI names it */
-    if (channel_of(name, &ch) < 0)
+    if (channel_of(name, (char *[]){"motor", argv[1]}, &ch) < 0)
         return;
     if (!parse_int(argv[2], &cps)) {
         reply_error("speed: '%s' is not a number", argv[2]);
@@ -285,7 +288,7 @@ static void cmd_enc(int argc, char **argv, const char *line)
     int rc;
     (void)argc;
     (void)argv;
-    if (channel_of(line, &ch) < 0)
+    if (channel_of(line, argv, &ch) < 0)
         return;
     rc = sai_read(ch, &position);
     if (rc >= 0)
@@ -345,8 +348,7 @@ static void cmd_i2c(int argc, char **argv, const char *line)
     unsigned bus;
     (void)argc;
     (void)line;
-    if (argv[1][0] != 's' || argv[1][1] != 'c' || argv[1][2] != 'a' || argv[1][3] != 'n' ||
-        argv[1][4] != '\0') {
+    if (!same(argv[1], "scan")) {
         reply_error("i2c: unknown subcommand '%s' (try i2c scan)", argv[1]);
         return;
     }
@@ -410,15 +412,6 @@ static void cmd_help(int argc, char **argv, const char *line)
         (void)k_snprintf(head, sizeof head, "%s %s", commands[i].name, commands[i].usage);
         k_printf("  %-22s %s\n", head, commands[i].what);
     }
-}
-
-static int same(const char *a, const char *b)
-{
-    while (*a != '\0' && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
 }
 
 static int is_blank(char c)
