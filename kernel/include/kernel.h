@@ -134,6 +134,28 @@ int k_thread_setprio(struct k_thread *t, unsigned prio);
 /* The first thread whose stack guard was found broken, or NULL. */
 struct k_thread *k_stack_overflowed(void);
 
+/* ---- introspection (for a shell's ps and for reports) ---- */
+/* One thread as k_thread_list saw it. */
+struct k_thread_info {
+    const char *name;
+    uint8_t prio;           /* effective priority (base or inherited) */
+    uint8_t base_prio;
+    uint8_t state;          /* enum k_thread_state */
+    uint8_t is_current;     /* 1 for the thread that called k_thread_list */
+    const uint32_t *stack_base; /* lowest word of its stack */
+    uint32_t stack_bytes;   /* size given to k_thread_create (guard words included) */
+    uint32_t stack_used;    /* high-water mark, bytes: the deepest word ever written */
+    uint32_t switches_in;   /* times the scheduler switched to it */
+};
+/* Snapshot of every created thread (the idle thread included, most recently
+ * created first) into out[0 .. max-1]. Returns the number of threads that
+ * exist, which may exceed max (only max are written); K_EINVAL if out is NULL
+ * and max > 0. The list is copied with interrupts masked; the stack
+ * high-water marks are measured afterwards with interrupts enabled, from
+ * the fill k_thread_create writes (so the mark is a lower bound: a stack
+ * word written with the fill value itself is not counted). */
+int k_thread_list(struct k_thread_info *out, unsigned max);
+
 /* ---- counting semaphores ---- */
 struct k_sem {
     uint32_t count;

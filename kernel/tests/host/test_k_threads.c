@@ -853,6 +853,67 @@ static void test_stack_guard(void **state)
     assert_non_null(strstr(host_console, "stack overflow in thread 'overflower'"));
 }
 
+/* ---- introspection: k_thread_list ---- */
+
+#define DEEP_BYTES 8192u
+static struct k_thread_info seen[4];
+static int seen_count;
+
+static void *deep_lister(void *arg)
+{
+    volatile uint8_t deep[DEEP_BYTES];   /* puts the high-water mark below 8 KiB */
+    size_t i;
+    (void)arg;
+    for (i = 0; i < sizeof deep; i++)
+        deep[i] = (uint8_t)i;
+    seen_count = k_thread_list(seen, 4);
+    return NULL;
+}
+
+static void *short_sleeper(void *arg)
+{
+    (void)arg;
+    return (void *)(intptr_t)k_sleep_ticks(5);
+}
+
+static void test_thread_list(void **state)
+{
+    struct k_thread_info after[3], one;
+    (void)state;
+    assert_int_equal(k_thread_list(NULL, 0), 1); /* the idle thread alone */
+    assert_int_equal(k_thread_list(NULL, 1), K_EINVAL);
+    spawn(1, "sleeper", short_sleeper, NULL, 6);  /* runs first, then blocks */
+    spawn(0, "lister", deep_lister, NULL, 5);
+    k_start();
+    assert_int_equal(seen_count, 3);
+    /* most recently created first: lister, sleeper, idle */
+    assert_string_equal(seen[0].name, "lister");
+    assert_int_equal(seen[0].prio, 5);
+    assert_int_equal(seen[0].base_prio, 5);
+    assert_int_equal(seen[0].state, K_THREAD_READY);
+    assert_int_equal(seen[0].is_current, 1);
+    assert_int_equal(seen[0].stack_bytes, STACK_BYTES);
+    assert_true(seen[0].stack_used >= DEEP_BYTES);
+    assert_true(seen[0].stack_used < STACK_BYTES);
+    assert_string_equal(seen[1].name, "sleeper");
+    assert_int_equal(seen[1].state, K_THREAD_BLOCKED);
+    assert_int_equal(seen[1].is_current, 0);
+    assert_int_equal(seen[1].prio, 6);
+    assert_true(seen[1].stack_used > 0u);
+    assert_true(seen[1].stack_used < seen[0].stack_used);
+    assert_string_equal(seen[2].name, "idle");
+    assert_int_equal(seen[2].prio, K_PRIO_IDLE);
+    assert_int_equal(seen[2].stack_bytes, K_IDLE_STACK_BYTES);
+    /* after the run both have exited; max = 1 writes only the first entry */
+    assert_int_equal(k_thread_list(after, 3), 3);
+    assert_int_equal(after[0].state, K_THREAD_DEAD);
+    assert_int_equal(after[1].state, K_THREAD_DEAD);
+    assert_int_equal(after[1].switches_in, 2); /* started, then woken once */
+    memset(&one, 0xA5, sizeof one);
+    assert_int_equal(k_thread_list(&one, 1), 3);
+    assert_string_equal(one.name, "lister");
+}
+
 /* ---- the B-scheduler thread ---- */
 
 static struct bsched bs;
@@ -954,6 +1015,7 @@ int main(void)
         T(test_events),
         T(test_join),
         T(test_stack_guard),
+        T(test_thread_list),
         T(test_bsched_thread_and_overrun),
         T(test_bsched_thread_no_overrun_when_fast),
     };

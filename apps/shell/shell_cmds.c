@@ -1,0 +1,464 @@
+/*
+ * Commands of the console shell. The port commands (ad, da, bio, bin,
+ * fast, pwm, motor, enc, led) name their channel the way the uniform access
+ * layer does ("ad 5" is SAI channel "analog in 5"), so the channel checks,
+ * ranges and error codes are SAI's (drivers/sai.h); the shell adds the
+ * extras SAI has no room for (a PWM frequency, an encoder's speed).
+ */
+#include "shell.h"
+
+#include <stdarg.h>
+#include <stdint.h>
+
+#include "kernel.h"
+#include "drivers/console_in.h"
+#include "drivers/drv_err.h"
+#include "drivers/i2c.h"
+#include "drivers/motor.h"
+#include "drivers/sai.h"
+#include "drivers/tpu.h"
+
+struct shell_cmd {
+    const char *name;
+    const char *usage;      /* arguments, for help and error messages */
+    const char *what;
+    int min_args, max_args; /* words after the command name */
+    void (*run)(int argc, char **argv, const char *line);
+};
+
+static void reply_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+static void reply_error(const char *fmt, ...)
+{
+    char text[SHELL_LINE_MAX + 64u];
+    va_list ap;
+    va_start(ap, fmt);
+    (void)k_vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    k_printf("error: %s\n", text);
+}
+
+/* A signed decimal int32 ("-12", "+5", "300"): 1 if it is one, else 0. */
+static int parse_int(const char *s, int32_t *out)
+{
+    uint32_t v = 0, limit = 0x7FFFFFFFu;
+    int neg = 0;
+    if (*s == '-' || *s == '+') {
+        neg = (*s == '-');
+        s++;
+    }
+    if (neg)
+        limit = 0x80000000u;
+    if (*s == '\0')
+        return 0;
+    for (; *s != '\0'; s++) {
+        uint32_t d;
+        if (*s < '0' || *s > '9')
+            return 0;
+        d = (uint32_t)(*s - '0');
+        if (v > (limit - d) / 10u)
+            return 0;
+        v = v * 10u + d;
+    }
+    *out = neg ? (int32_t)(0u - v) : (int32_t)v;
+    return 1;
+}
+
+/* Whole-string equality (no libc on the target). */
+static int same(const char *a, const char *b)
+{
+    while (*a != '\0' && *a == *b) {
+        a++;
+        b++;
+    }
+    return *a == *b;
+}
+
+/* The channel named by the command's first two words ("ad 5"), parsed by SAI
+ * from the line; reports the error itself and returns < 0 when there is none. */
+static int channel_of(const char *line, char **argv, struct sai_channel *ch)
+{
+    const char *rest;
+    unsigned k;
+    int rc = sai_parse_prefix(line, ch, &rest);
+    if (rc >= 0)
+        return rc;
+    for (k = 0; k < SAI_KIND_COUNT; k++) { /* name the numbers the kind has */
+        const struct sai_kind_info *info = sai_kind_info(k);
+        if (same(argv[0], info->short_name)) {
+            reply_error("%s %s: no such channel (%s %u..%u)", argv[0], argv[1],
+                        info->short_name, info->first, info->last);
+            return rc;
+        }
+    }
+    reply_error("%s %s: no such channel", argv[0], argv[1]);
+    return rc;
+}
+
+/* Prints "SHORT N = V": the answer of every port command. */
+static void print_channel(struct sai_channel ch, int32_t value)
+{
+    k_printf("%s %u = %ld\n", sai_kind_info(ch.kind)->short_name, ch.index, (long)value);
+}
+
+static void report_driver_error(const char *what, int rc)
+{
+    reply_error("%s: %s (%d)", what, drv_strerror(rc), rc);
+}
+
+/* ---- port commands through SAI ---- */
+
+/* ad N, bin N, bio N: read. da N V, bio N V, fast N V: write. */
+static void cmd_port(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t value;
+    int rc;
+    if (channel_of(line, argv, &ch) < 0)
+        return;
+    if (argc == 2) {
+        rc = sai_read(ch, &value);
+        if (rc < 0) {
+            report_driver_error(line, rc);
+            return;
+        }
+        print_channel(ch, value);
+        return;
+    }
+    if (!parse_int(argv[2], &value)) {
+        reply_error("%s: '%s' is not a number", argv[0], argv[2]);
+        return;
+    }
+    rc = sai_write(ch, value);
+    if (rc == DRV_ERR_RANGE) {
+        const struct sai_kind_info *info = sai_kind_info(ch.kind);
+        reply_error("%s %s: value %ld out of range %ld..%ld", argv[0], argv[1], (long)value,
+                    (long)info->min, (long)info->max);
+        return;
+    }
+    if (rc < 0) {
+        report_driver_error(line, rc);
+        return;
+    }
+    print_channel(ch, value);
+}
+
+static void cmd_led(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t value;
+    int rc;
+    (void)line;
+    if (sai_parse("led", &ch) < 0)
+        return;
+    if (argc == 2) {
+        if (same(argv[1], "on"))
+            value = 1;
+        else if (same(argv[1], "off"))
+            value = 0;
+        else {
+            reply_error("led: '%s': say on or off", argv[1]);
+            return;
+        }
+        rc = sai_write(ch, value);
+        if (rc < 0) {
+            report_driver_error("led", rc);
+            return;
+        }
+    }
+    rc = sai_read(ch, &value);
+    if (rc < 0) {
+        report_driver_error("led", rc);
+        return;
+    }
+    k_printf("led = %s\n", value != 0 ? "on" : "off");
+}
+
+/* pwm CH PERMILLE [HZ] */
+static void cmd_pwm(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t permille, hz = 0;
+    uint32_t hz_now;
+    int duty_now, rc;
+    if (channel_of(line, argv, &ch) < 0)
+        return;
+    if (!parse_int(argv[2], &permille)) {
+        reply_error("pwm: '%s' is not a number", argv[2]);
+        return;
+    }
+    if (argc == 4 && !parse_int(argv[3], &hz)) {
+        reply_error("pwm: '%s' is not a number", argv[3]);
+        return;
+    }
+    rc = sai_check_value(ch, permille);
+    if (rc == DRV_ERR_RANGE) {
+        reply_error("pwm %u: duty %ld out of range 0..1000 per-mille", ch.index, (long)permille);
+        return;
+    }
+    if (argc == 4 && (hz < (int32_t)TPU_PWM_HZ_MIN || hz > (int32_t)TPU_PWM_HZ_MAX)) {
+        reply_error("pwm %u: frequency %ld out of range %u..%u Hz", ch.index, (long)hz,
+                    TPU_PWM_HZ_MIN, TPU_PWM_HZ_MAX);
+        return;
+    }
+    rc = tpu_pwm(ch.index, (uint32_t)hz, (int)permille);
+    if (rc >= 0)
+        rc = tpu_pwm_get(ch.index, &hz_now, &duty_now);
+    if (rc < 0) {
+        report_driver_error("pwm", rc);
+        return;
+    }
+    k_printf("pwm %u = %d per-mille at %lu Hz\n", ch.index, duty_now, (unsigned long)hz_now);
+}
+
+/* motor N SPEED: open loop, signed per-mille of full power. */
+static void cmd_motor(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t permille;
+    int rc;
+    (void)argc;
+    if (channel_of(line, argv, &ch) < 0)
+        return;
+    if (!parse_int(argv[2], &permille)) {
+        reply_error("motor: '%s' is not a number", argv[2]);
+        return;
+    }
+    rc = sai_write(ch, permille);
+    if (rc == DRV_ERR_RANGE) {
+        reply_error("motor %u: power %ld out of range -1000..1000 per-mille", ch.index,
+                    (long)permille);
+        return;
+    }
+    if (rc < 0) {
+        report_driver_error("motor", rc);
+        return;
+    }
+    k_printf("motor %u = %ld per-mille\n", ch.index, (long)permille);
+}
+
+/* speed N CPS: closed loop, the motor service's PI controller. */
+static void cmd_speed(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t cps;
+    int rc;
+    char name[SHELL_LINE_MAX + 8u];
+    (void)argc;
+    (void)line;
+    (void)k_snprintf(name, sizeof name, "motor %s", argv[1]); /* the channel as SAI names it */
+    if (channel_of(name, (char *[]){"motor", argv[1]}, &ch) < 0)
+        return;
+    if (!parse_int(argv[2], &cps)) {
+        reply_error("speed: '%s' is not a number", argv[2]);
+        return;
+    }
+    rc = motor_set_speed(ch.index, cps);
+    if (rc == DRV_ERR_RANGE) {
+        reply_error("speed %u: %ld out of range -%ld..%ld counts/s", ch.index, (long)cps,
+                    (long)MOTOR_SPEED_MAX, (long)MOTOR_SPEED_MAX);
+        return;
+    }
+    if (rc < 0) {
+        report_driver_error("speed", rc);
+        return;
+    }
+    k_printf("speed %u = %ld counts/s\n", ch.index, (long)cps);
+}
+
+/* sleep MS: waits, so that a script piped into the shell can let time pass. */
+#define SHELL_SLEEP_MAX_MS 60000
+static void cmd_sleep(int argc, char **argv, const char *line)
+{
+    int32_t ms;
+    (void)argc;
+    (void)line;
+    if (!parse_int(argv[1], &ms) || ms < 0 || ms > SHELL_SLEEP_MAX_MS) {
+        reply_error("sleep: '%s': milliseconds 0..%d", argv[1], SHELL_SLEEP_MAX_MS);
+        return;
+    }
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)ms));
+    k_printf("slept %ld ms\n", (long)ms);
+}
+
+/* enc N: position and speed. */
+static void cmd_enc(int argc, char **argv, const char *line)
+{
+    struct sai_channel ch;
+    int32_t position, speed;
+    int rc;
+    (void)argc;
+    (void)argv;
+    if (channel_of(line, argv, &ch) < 0)
+        return;
+    rc = sai_read(ch, &position);
+    if (rc >= 0)
+        rc = motor_speed(ch.index, &speed);
+    if (rc < 0) {
+        report_driver_error("enc", rc);
+        return;
+    }
+    k_printf("enc %u = %ld counts, %ld counts/s\n", ch.index, (long)position, (long)speed);
+}
+
+/* ---- system commands ---- */
+
+static const char *state_name(const struct k_thread_info *t)
+{
+    if (t->is_current)
+        return "run";
+    switch (t->state) {
+    case K_THREAD_READY:   return "ready";
+    case K_THREAD_BLOCKED: return "blocked";
+    case K_THREAD_DEAD:    return "dead";
+    default:               return "?";
+    }
+}
+
+#define SHELL_PS_MAX 16u
+static void cmd_ps(int argc, char **argv, const char *line)
+{
+    static struct k_thread_info threads[SHELL_PS_MAX]; /* static: keep the shell's stack small */
+    int n = k_thread_list(threads, SHELL_PS_MAX), i;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    k_printf("%-14s %4s %-8s %13s %8s\n", "thread", "prio", "state", "stack used", "switches");
+    for (i = 0; i < n && i < (int)SHELL_PS_MAX; i++) {
+        const struct k_thread_info *t = &threads[i];
+        k_printf("%-14s %4u %-8s %6lu/%-6lu %8lu\n", t->name, t->prio, state_name(t),
+                 (unsigned long)t->stack_used, (unsigned long)t->stack_bytes,
+                 (unsigned long)t->switches_in);
+    }
+    if (n > (int)SHELL_PS_MAX)
+        k_printf("(%d more threads not shown)\n", n - (int)SHELL_PS_MAX);
+}
+
+static void cmd_uptime(int argc, char **argv, const char *line)
+{
+    uint32_t ms = k_uptime_ms();
+    (void)argc;
+    (void)argv;
+    (void)line;
+    k_printf("uptime %lu.%03lu s (%lu ticks at %u Hz)\n", (unsigned long)(ms / 1000u),
+             (unsigned long)(ms % 1000u), (unsigned long)k_ticks(), (unsigned)K_TICK_HZ);
+}
+
+static void cmd_i2c(int argc, char **argv, const char *line)
+{
+    unsigned bus;
+    (void)argc;
+    (void)line;
+    if (!same(argv[1], "scan")) {
+        reply_error("i2c: unknown subcommand '%s' (try i2c scan)", argv[1]);
+        return;
+    }
+    for (bus = 0; bus < I2C_BUS_COUNT; bus++) {
+        uint8_t found[16];
+        int n = i2c_scan(bus, found, sizeof found), i;
+        if (n < 0) {
+            k_printf("i2c bus %c: %s (%d)\n", 'A' + bus, drv_strerror(n), n);
+            continue;
+        }
+        k_printf("i2c bus %c: %d device%s", 'A' + bus, n, n == 1 ? "" : "s");
+        for (i = 0; i < n && i < (int)sizeof found; i++)
+            k_printf(" 0x%02x", found[i]);
+        k_printf("\n");
+    }
+}
+
+static void cmd_console(int argc, char **argv, const char *line)
+{
+    struct console_in_stats st;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    console_in_stats(&st);
+    k_printf("console: %lu bytes, %lu lines, %lu too long, ring full %lu times, "
+             "%lu overruns, %lu errors\n",
+             (unsigned long)st.bytes, (unsigned long)st.lines, (unsigned long)st.too_long,
+             (unsigned long)st.ring_full, (unsigned long)st.overruns, (unsigned long)st.errors);
+}
+
+static void cmd_help(int argc, char **argv, const char *line);
+
+static const struct shell_cmd commands[] = {
+    {"help", "", "this list", 0, 0, cmd_help},
+    {"ad", "N", "read analog input N (0..23)", 1, 1, cmd_port},
+    {"da", "N V", "set analog output N (0..5) to V (0..255)", 2, 2, cmd_port},
+    {"bio", "N [V]", "binary I/O line N (0..15): read, or latch V (1 = input)", 1, 2, cmd_port},
+    {"bin", "N", "read binary input N (1..5, DUART IP1-IP5)", 1, 1, cmd_port},
+    {"fast", "N V", "set fast output bit N (0..15) to V (0/1)", 2, 2, cmd_port},
+    {"pwm", "CH PERMILLE [HZ]", "TPU channel CH (0..15): PWM duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
+    {"motor", "N SPEED", "motor N (0..2) power, signed per-mille (-1000..1000)", 2, 2, cmd_motor},
+    {"speed", "N CPS", "motor N closed loop: PI speed set-point in counts/s", 2, 2, cmd_speed},
+    {"enc", "N", "motor N's encoder: position (counts), speed (counts/s)", 1, 1, cmd_enc},
+    {"led", "on|off", "switch the LED (no argument: show it)", 0, 1, cmd_led},
+    {"ps", "", "threads: priority, state, stack used/size, switches", 0, 0, cmd_ps},
+    {"uptime", "", "time since boot", 0, 0, cmd_uptime},
+    {"sleep", "MS", "wait MS milliseconds (0..60000), for scripts", 1, 1, cmd_sleep},
+    {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
+    {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
+};
+#define COMMAND_COUNT (sizeof commands / sizeof commands[0])
+
+static void cmd_help(int argc, char **argv, const char *line)
+{
+    unsigned i;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    for (i = 0; i < COMMAND_COUNT; i++) {
+        char head[32];
+        (void)k_snprintf(head, sizeof head, "%s %s", commands[i].name, commands[i].usage);
+        k_printf("  %-22s %s\n", head, commands[i].what);
+    }
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+void shell_execute(char *line)
+{
+    char original[SHELL_LINE_MAX + 1u];
+    char *argv[SHELL_MAX_ARGS + 1u];
+    int argc = 0;
+    unsigned i;
+    char *p = line;
+    /* the words, split in place; the line as typed (blanks trimmed) is kept for SAI */
+    while (is_blank(*p))
+        p++;
+    for (i = 0; p[i] != '\0' && i < SHELL_LINE_MAX; i++)
+        original[i] = p[i];
+    while (i > 0u && is_blank(original[i - 1u]))
+        i--;
+    original[i] = '\0';
+    while (*p != '\0') {
+        if (argc == (int)SHELL_MAX_ARGS + 1) {
+            reply_error("too many arguments");
+            return;
+        }
+        argv[argc++] = p;
+        while (*p != '\0' && !is_blank(*p))
+            p++;
+        if (*p != '\0')
+            *p++ = '\0';
+        while (is_blank(*p))
+            p++;
+    }
+    if (argc == 0)
+        return;
+    for (i = 0; i < COMMAND_COUNT; i++) {
+        const struct shell_cmd *c = &commands[i];
+        if (!same(argv[0], c->name))
+            continue;
+        if (argc - 1 < c->min_args || argc - 1 > c->max_args) {
+            reply_error("usage: %s %s", c->name, c->usage);
+            return;
+        }
+        c->run(argc, argv, original);
+        return;
+    }
+    reply_error("unknown command '%s' (try help)", argv[0]);
+}

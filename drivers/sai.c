@@ -1,0 +1,280 @@
+/* The uniform access layer: channel names, checks and dispatch; see sai.h. */
+#include "sai.h"
+
+#include "drivers/analog.h"
+#include "drivers/binin.h"
+#include "drivers/bio.h"
+#include "drivers/drv_err.h"
+#include "drivers/fastout.h"
+#include "drivers/led.h"
+#include "drivers/motor.h"
+#include "drivers/tpu.h"
+
+static const struct sai_kind_info kinds[SAI_KIND_COUNT] = {
+    [SAI_ANALOG_IN]  = {"analog in", "ad", 0, ANALOG_INPUTS - 1u, 1, 0, 0, 255, ""},
+    [SAI_ANALOG_OUT] = {"analog out", "da", 0, ANALOG_OUTPUTS - 1u, 0, 1, 0, 255, ""},
+    [SAI_BINARY_IO]  = {"binary io", "bio", 0, BIO_LINES - 1u, 1, 1, 0, 1, ""},
+    [SAI_BINARY_IN]  = {"binary in", "bin", BININ_FIRST, BININ_LAST, 1, 0, 0, 1, ""},
+    [SAI_FAST_OUT]   = {"fast out", "fast", 0, FASTOUT_BITS - 1u, 1, 1, 0, 1, ""},
+    [SAI_PWM]        = {"pwm", "pwm", 0, TPU_CHANNELS - 1u, 1, 1, 0, 1000, "per-mille"},
+    [SAI_MOTOR]      = {"motor", "motor", 0, MOTOR_COUNT - 1u, 1, 1, -1000, 1000, "per-mille"},
+    [SAI_ENCODER]    = {"encoder", "enc", 0, MOTOR_COUNT - 1u, 1, 0, INT32_MIN, INT32_MAX, "counts"},
+    [SAI_LED]        = {"led", "led", 0, 0, 1, 1, 0, 1, ""},
+};
+
+const struct sai_kind_info *sai_kind_info(unsigned kind)
+{
+    return kind < SAI_KIND_COUNT ? &kinds[kind] : NULL;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+static const char *skip_blanks(const char *s)
+{
+    while (is_blank(*s))
+        s++;
+    return s;
+}
+
+static char lower(char c)
+{
+    return (c >= 'A' && c <= 'Z') ? (char)(c - 'A' + 'a') : c;
+}
+
+/* If text starts with name (word by word, any run of blanks between words,
+ * case-insensitive) followed by a blank or the end: the text after it. */
+static const char *match_name(const char *text, const char *name)
+{
+    while (*name != '\0') {
+        if (*name == ' ') {
+            if (!is_blank(*text))
+                return NULL;
+            text = skip_blanks(text);
+            name++;
+            continue;
+        }
+        if (lower(*text) != *name)
+            return NULL;
+        text++;
+        name++;
+    }
+    return (*text == '\0' || is_blank(*text)) ? text : NULL;
+}
+
+/* Longest kind name (or short name) at the start of text. */
+static int match_kind(const char *text, const char **after)
+{
+    int best = -1;
+    size_t best_len = 0;
+    unsigned k;
+    for (k = 0; k < SAI_KIND_COUNT; k++) {
+        const char *names[2] = {kinds[k].name, kinds[k].short_name};
+        unsigned n;
+        for (n = 0; n < 2u; n++) {
+            const char *end = match_name(text, names[n]);
+            if (end != NULL && (size_t)(end - text) > best_len) {
+                best = (int)k;
+                best_len = (size_t)(end - text);
+                *after = end;
+            }
+        }
+    }
+    return best;
+}
+
+/* A channel number: 1 to 3 decimal digits ending at a blank or the end. */
+static int parse_number(const char *s, unsigned *value, const char **after)
+{
+    unsigned v = 0, digits = 0;
+    while (*s >= '0' && *s <= '9') {
+        if (++digits > 3u)
+            return 0;
+        v = v * 10u + (unsigned)(*s - '0');
+        s++;
+    }
+    if (digits == 0u || !(*s == '\0' || is_blank(*s)))
+        return 0;
+    *value = v;
+    *after = s;
+    return 1;
+}
+
+int sai_parse_prefix(const char *text, struct sai_channel *ch, const char **rest)
+{
+    const char *p, *after_number;
+    unsigned index;
+    int kind;
+    if (text == NULL || ch == NULL || rest == NULL)
+        return DRV_ERR_PARAM;
+    kind = match_kind(skip_blanks(text), &p);
+    if (kind < 0)
+        return DRV_ERR_CHANNEL;
+    p = skip_blanks(p);
+    if (parse_number(p, &index, &after_number)) {
+        p = after_number;
+    } else if (kinds[kind].first == kinds[kind].last && !(*p >= '0' && *p <= '9')) {
+        index = kinds[kind].first; /* a kind with one channel: the number is optional */
+    } else {
+        return DRV_ERR_CHANNEL;
+    }
+    if (index < kinds[kind].first || index > kinds[kind].last)
+        return DRV_ERR_CHANNEL;
+    ch->kind = (uint8_t)kind;
+    ch->index = (uint8_t)index;
+    *rest = p;
+    return DRV_OK;
+}
+
+int sai_parse(const char *text, struct sai_channel *ch)
+{
+    struct sai_channel parsed;
+    const char *rest;
+    int rc;
+    if (text == NULL || ch == NULL)
+        return DRV_ERR_PARAM;
+    rc = sai_parse_prefix(text, &parsed, &rest);
+    if (rc != DRV_OK)
+        return rc;
+    if (*skip_blanks(rest) != '\0')
+        return DRV_ERR_CHANNEL;
+    *ch = parsed;
+    return DRV_OK;
+}
+
+int sai_check(struct sai_channel ch)
+{
+    if (ch.kind >= SAI_KIND_COUNT || ch.index < kinds[ch.kind].first ||
+        ch.index > kinds[ch.kind].last)
+        return DRV_ERR_CHANNEL;
+    return DRV_OK;
+}
+
+int sai_check_value(struct sai_channel ch, int32_t value)
+{
+    if (sai_check(ch) != DRV_OK)
+        return DRV_ERR_CHANNEL;
+    if (!kinds[ch.kind].writable)
+        return DRV_ERR_PARAM;
+    if (value < kinds[ch.kind].min || value > kinds[ch.kind].max)
+        return DRV_ERR_RANGE;
+    return DRV_OK;
+}
+
+int sai_name(struct sai_channel ch, char *buf, size_t size)
+{
+    const char *name;
+    char digits[4];
+    size_t len = 0, n = 0, i;
+    unsigned v;
+    if (buf == NULL || size == 0u)
+        return DRV_ERR_PARAM;
+    if (sai_check(ch) != DRV_OK)
+        return DRV_ERR_CHANNEL;
+    v = ch.index;
+    do {
+        digits[n++] = (char)('0' + v % 10u);
+        v /= 10u;
+    } while (v != 0u);
+    for (name = kinds[ch.kind].name; *name != '\0'; name++, len++)
+        if (len + 1u < size)
+            buf[len] = *name;
+    if (len + 1u < size)
+        buf[len] = ' ';
+    len++;
+    for (i = n; i > 0u; i--, len++)
+        if (len + 1u < size)
+            buf[len] = digits[i - 1u];
+    buf[len + 1u < size ? len : size - 1u] = '\0';
+    return (int)len;
+}
+
+/* A driver's int result: a value (>= 0) into *value, or its error. */
+static int take(int rc, int32_t *value)
+{
+    if (rc < 0)
+        return rc;
+    *value = rc;
+    return DRV_OK;
+}
+
+int sai_read(struct sai_channel ch, int32_t *value)
+{
+    int rc, permille;
+    int32_t counts;
+    if (value == NULL)
+        return DRV_ERR_PARAM;
+    if (sai_check(ch) != DRV_OK)
+        return DRV_ERR_CHANNEL;
+    if (!kinds[ch.kind].readable)
+        return DRV_ERR_PARAM;
+    switch (ch.kind) {
+    case SAI_ANALOG_IN:
+        return take(analog_read(ch.index), value);
+    case SAI_BINARY_IO:
+        return take(bio_read(ch.index), value);
+    case SAI_BINARY_IN:
+        return take(binin_read(ch.index), value);
+    case SAI_FAST_OUT:
+        *value = (int32_t)((fastout_get() >> ch.index) & 1u);
+        return DRV_OK;
+    case SAI_PWM:
+        rc = tpu_pwm_get(ch.index, NULL, &permille);
+        if (rc < 0)
+            return rc;
+        *value = permille;
+        return DRV_OK;
+    case SAI_MOTOR:
+        rc = motor_power(ch.index, &permille);
+        if (rc < 0)
+            return rc;
+        *value = permille;
+        return DRV_OK;
+    case SAI_ENCODER:
+        rc = motor_position(ch.index, &counts);
+        if (rc < 0)
+            return rc;
+        *value = counts;
+        return DRV_OK;
+    case SAI_LED:
+        *value = led_is_on() ? 1 : 0;
+        return DRV_OK;
+    default:
+        return DRV_ERR_PARAM;
+    }
+}
+
+int sai_write(struct sai_channel ch, int32_t value)
+{
+    int rc = sai_check_value(ch, value);
+    int v = (int)value;
+    if (rc != DRV_OK)
+        return rc;
+    switch (ch.kind) {
+    case SAI_ANALOG_OUT:
+        rc = analog_write(ch.index, v);
+        break;
+    case SAI_BINARY_IO:
+        rc = bio_write(ch.index, v);
+        break;
+    case SAI_FAST_OUT:
+        rc = fastout_write(ch.index, v);
+        break;
+    case SAI_PWM:
+        rc = tpu_pwm(ch.index, 0, v); /* 0: keep the channel's frequency */
+        break;
+    case SAI_MOTOR:
+        rc = motor_set(ch.index, v);
+        break;
+    case SAI_LED:
+        led_set(v != 0);
+        rc = DRV_OK;
+        break;
+    default:
+        rc = DRV_ERR_PARAM;
+        break;
+    }
+    return rc < 0 ? rc : DRV_OK;
+}

@@ -1,0 +1,25 @@
+# Host unit tests of the shell stream's driver-side logic (cmocka):
+#   test_sai        the uniform access layer (drivers/sai.c) against fake drivers
+#   test_line_edit  console line assembly (drivers/line_edit.c)
+#
+#   make check-shell-unit
+SHELL_UNIT_BUILD := $(BUILD)/drivers/tests
+SHELL_UNIT_TESTS := $(SHELL_UNIT_BUILD)/test_sai $(SHELL_UNIT_BUILD)/test_line_edit
+SHELL_UNIT_CFLAGS = $(HOST_CFLAGS) -I$(ROOT)
+
+ALL += $(SHELL_UNIT_TESTS)
+CHECKS += shell-unit
+HOST_UNIT_CHECKS += shell-unit
+
+$(SHELL_UNIT_BUILD)/test_sai: drivers/tests/test_sai.c drivers/sai.c drivers/sai.h drivers/drv_err.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_sai.c drivers/sai.c -lcmocka
+
+$(SHELL_UNIT_BUILD)/test_line_edit: drivers/tests/test_line_edit.c drivers/line_edit.c drivers/line_edit.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_line_edit.c drivers/line_edit.c -lcmocka
+
+.PHONY: check-shell-unit
+check-shell-unit: $(SHELL_UNIT_TESTS)
+	@$(SETUP) base
+	@RESULTS=$(RESULTS) ci/cmocka-suite shell-unit $(SHELL_UNIT_TESTS)
