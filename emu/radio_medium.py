@@ -23,7 +23,10 @@ Faults, deterministic for --seed: the decisions for one transmission at one
 receiver come from a generator seeded with (seed, sender, transmission
 number, receiver), so they do not depend on how the processes interleave.
     --loss P       a receiver misses a whole transmission with probability P
-    --corrupt Q    each character heard is corrupted with probability Q
+    --corrupt Q    a receiver gets a transmission with 1-3 corrupted characters
+                   with probability Q (a frame error rate: see net/README.md
+                   for why not a per-character rate)
+    --byte-errors Q  each character heard is corrupted with probability Q
     --noise R      with probability R a transmission gets a noise burst
                    (4-16 garbage characters) at a receiver, and a burst of
                    garbage follows it while the channel is idle
@@ -61,6 +64,7 @@ class Station:
         self.tx_rngs = {}             # receiver serial -> fault generator
         self.tx_lost = set()          # receivers missing this transmission
         self.tx_burst = {}            # receiver serial -> (start, length)
+        self.tx_corrupt = {}          # receiver serial -> character positions to corrupt
         self.tx_chars = 0             # characters in this transmission
         self.tx_collided = False
 
@@ -126,6 +130,7 @@ class Medium:
         st.tx_rngs = {}
         st.tx_lost = set()
         st.tx_burst = {}
+        st.tx_corrupt = {}
         self.stats["transmissions"] += 1
         for r in self.stations:
             if r is st:
@@ -136,6 +141,10 @@ class Medium:
                 st.tx_lost.add(r.serial)
             if rng.random() < self.args.noise:
                 st.tx_burst[r.serial] = (rng.randrange(0, 64), rng.randrange(4, 17))
+            if rng.random() < self.args.corrupt:
+                # Positions 4..11 lie inside every frame (the shortest, an
+                # ACK, is 12 characters with its pad).
+                st.tx_corrupt[r.serial] = set(rng.sample(range(4, 12), rng.randrange(1, 4)))
 
     def end_transmission(self, st):
         # Idle noise after the transmission, at the receivers it was drawn for.
@@ -178,7 +187,8 @@ class Medium:
                 if index == burst[0]:
                     self.stats["noise_bursts"] += 1
                 out = rng.randrange(256)
-            elif rng.random() < self.args.corrupt:
+            elif (index in st.tx_corrupt.get(r.serial, ())
+                  or rng.random() < self.args.byte_errors):
                 out = byte ^ rng.randrange(1, 256)
                 self.stats["corrupted"] += 1
             self.stats["delivered"] += 1
@@ -298,6 +308,7 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--loss", type=probability, default=0.0)
     ap.add_argument("--corrupt", type=probability, default=0.0)
+    ap.add_argument("--byte-errors", type=probability, default=0.0)
     ap.add_argument("--noise", type=probability, default=0.0)
     ap.add_argument("--out-of-range", action="append", default=[], metavar="A:B")
     ap.add_argument("-v", "--verbose", action="store_true")

@@ -9,9 +9,9 @@ uint16_t crc16_byte(uint16_t crc, uint8_t byte)
     crc = (uint16_t)(crc ^ (uint16_t)(byte << 8));
     for (i = 0; i < 8u; i++) {
         if ((crc & 0x8000u) != 0u)
-            crc = (uint16_t)((crc << 1) ^ 0x1021u);
+            crc = (uint16_t)(((unsigned)crc << 1) ^ 0x1021u);
         else
-            crc = (uint16_t)(crc << 1);
+            crc = (uint16_t)((unsigned)crc << 1);
     }
     return crc;
 }

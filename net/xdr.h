@@ -14,47 +14,47 @@
  * Floating point: IEEE 754 single/double bit patterns are copied, not
  * computed, so soft-float targets (the CPU32) need no float arithmetic.
  */
-#ifndef NET_XDR_H
-#define NET_XDR_H
+#ifndef NET_NXDR_H
+#define NET_NXDR_H
 
 #include <stddef.h>
 #include <stdint.h>
 
-enum xdr_op { XDR_ENCODE = 0, XDR_DECODE = 1 };
+enum nxdr_op { NXDR_ENCODE = 0, NXDR_DECODE = 1 };
 
-struct xdr {
+struct nxdr {
     uint8_t *buf;       /* decode: the input (never written) */
     size_t size;
     size_t pos;         /* next byte */
-    uint8_t op;         /* enum xdr_op */
+    uint8_t op;         /* enum nxdr_op */
     uint8_t failed;
 };
 
-void xdr_init_encode(struct xdr *x, uint8_t *buf, size_t size);
-void xdr_init_decode(struct xdr *x, const uint8_t *buf, size_t size);
+void nxdr_init_encode(struct nxdr *x, uint8_t *buf, size_t size);
+void nxdr_init_decode(struct nxdr *x, const uint8_t *buf, size_t size);
 /* Bytes encoded or consumed so far. */
-size_t xdr_getpos(const struct xdr *x);
+size_t nxdr_getpos(const struct nxdr *x);
 
-int xdr_int(struct xdr *x, int32_t *v);
-int xdr_u_int(struct xdr *x, uint32_t *v);
-int xdr_hyper(struct xdr *x, int64_t *v);
-int xdr_u_hyper(struct xdr *x, uint64_t *v);
-int xdr_bool(struct xdr *x, int32_t *v);    /* 0 or 1 only */
-int xdr_enum(struct xdr *x, int32_t *v);
-int xdr_float(struct xdr *x, float *v);
-int xdr_double(struct xdr *x, double *v);
+int nxdr_int(struct nxdr *x, int32_t *v);
+int nxdr_u_int(struct nxdr *x, uint32_t *v);
+int nxdr_hyper(struct nxdr *x, int64_t *v);
+int nxdr_u_hyper(struct nxdr *x, uint64_t *v);
+int nxdr_bool(struct nxdr *x, int32_t *v);    /* 0 or 1 only */
+int nxdr_enum(struct nxdr *x, int32_t *v);
+int nxdr_float(struct nxdr *x, float *v);
+int nxdr_double(struct nxdr *x, double *v);
 /* Fixed-length opaque data: len bytes plus zero padding to a multiple of 4. */
-int xdr_opaque(struct xdr *x, uint8_t *data, uint32_t len);
+int nxdr_opaque(struct nxdr *x, uint8_t *data, uint32_t len);
 /* Variable-length opaque data: length, bytes, padding; at most max bytes. */
-int xdr_bytes(struct xdr *x, uint8_t *data, uint32_t *len, uint32_t max);
+int nxdr_bytes(struct nxdr *x, uint8_t *data, uint32_t *len, uint32_t max);
 /* String of at most max bytes; str has room for max + 1 (the NUL). */
-int xdr_string(struct xdr *x, char *str, uint32_t max);
+int nxdr_string(struct nxdr *x, char *str, uint32_t max);
 
-typedef int (*xdr_proc)(struct xdr *x, void *element);
+typedef int (*nxdr_proc)(struct nxdr *x, void *element);
 /* Fixed-length array of count elements of elsize bytes each. */
-int xdr_vector(struct xdr *x, void *array, uint32_t count, size_t elsize, xdr_proc proc);
+int nxdr_vector(struct nxdr *x, void *array, uint32_t count, size_t elsize, nxdr_proc proc);
 /* Variable-length array: count, then the elements; at most max elements. */
-int xdr_array(struct xdr *x, void *array, uint32_t *count, uint32_t max, size_t elsize,
-              xdr_proc proc);
+int nxdr_array(struct nxdr *x, void *array, uint32_t *count, uint32_t max, size_t elsize,
+              nxdr_proc proc);
 
-#endif /* NET_XDR_H */
+#endif /* NET_NXDR_H */

@@ -73,15 +73,15 @@ static void *echo_main(void *arg)
 /* A soak message: XDR (sender, number, fill) so both ends agree byte for byte. */
 static int soak_encode(uint8_t *buf, size_t size, uint32_t from, uint32_t number)
 {
-    struct xdr x;
+    struct nxdr x;
     uint8_t fill[SOAK_LEN - 8u];
     unsigned i;
     for (i = 0; i < sizeof fill; i++)
         fill[i] = (uint8_t)(number + i);
-    xdr_init_encode(&x, buf, size);
-    if (!xdr_u_int(&x, &from) || !xdr_u_int(&x, &number) || !xdr_opaque(&x, fill, sizeof fill))
+    nxdr_init_encode(&x, buf, size);
+    if (!nxdr_u_int(&x, &from) || !nxdr_u_int(&x, &number) || !nxdr_opaque(&x, fill, sizeof fill))
         return -1;
-    return (int)xdr_getpos(&x);
+    return (int)nxdr_getpos(&x);
 }
 
 static void *soak_rx_main(void *arg)
@@ -91,12 +91,12 @@ static void *soak_rx_main(void *arg)
     for (;;) {
         uint8_t src;
         uint32_t from, number;
-        struct xdr x;
+        struct nxdr x;
         int n = net_recv(PORT_SOAK, buf, sizeof buf, &src, 1000);
         if (n < 0)
             continue;
-        xdr_init_decode(&x, buf, (size_t)n);
-        if (!xdr_u_int(&x, &from) || !xdr_u_int(&x, &number) || from != src ||
+        nxdr_init_decode(&x, buf, (size_t)n);
+        if (!nxdr_u_int(&x, &from) || !nxdr_u_int(&x, &number) || from != src ||
             src >= LINK_MAX_STATIONS) {
             k_printf("netnode: bad soak message from %u\n", (unsigned)src);
             continue;
@@ -138,7 +138,17 @@ static void run_soak(void)
     k_printf("netnode: station %u sent %lu acknowledged, %lu failed in %lu ms\n",
              (unsigned)cfg.station, (unsigned long)sent, (unsigned long)failed,
              (unsigned long)(k_uptime_ms() - start));
-    (void)k_sleep_ticks(k_ms_to_ticks(cfg.linger_ms));
+    /* Keep receiving until every peer's messages are in, or linger_ms. */
+    start = k_uptime_ms();
+    while (k_uptime_ms() - start < cfg.linger_ms) {
+        int all = 1;
+        for (p = 0; p < LINK_MAX_STATIONS; p++)
+            if (p != cfg.station && (cfg.peers & (1u << p)) != 0u && rx_next[p] < cfg.messages)
+                all = 0;
+        if (all)
+            break;
+        (void)k_sleep_ticks(k_ms_to_ticks(100));
+    }
     for (p = 0; p < LINK_MAX_STATIONS; p++) {
         if (p == cfg.station || (cfg.peers & (1u << p)) == 0u)
             continue;

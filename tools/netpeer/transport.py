@@ -35,7 +35,12 @@ class MediumTransport:
 
     def _send(self, data):
         with self.lock:
-            self.sock.sendall(data)
+            if self.closed:
+                return
+            try:
+                self.sock.sendall(data)
+            except OSError:
+                self.closed = True    # the medium is gone: the air is silent
 
     def transmit(self, data):
         msgs = bytearray((MSG_CONTROL, SEL_TX))
