@@ -45,6 +45,7 @@ import asyncio
 import os
 import random
 import signal
+import time
 import sys
 
 MSG_DATA, MSG_CONTROL, MSG_HELLO = 0, 1, 2
@@ -195,6 +196,9 @@ class Medium:
             r.send(bytes((MSG_DATA, out)))
 
     def set_selects(self, st, selects):
+        if self.args.trace:
+            print(f"radio-medium: {time.monotonic():.4f} {st.name} selects {selects} "
+                  f"after {st.tx_chars} characters", file=sys.stderr, flush=True)
         was = st.on_air()
         st.selects = selects & (SEL_RX | SEL_TX)
         if st.on_air() and not was:
@@ -312,6 +316,7 @@ def main(argv=None):
     ap.add_argument("--noise", type=probability, default=0.0)
     ap.add_argument("--out-of-range", action="append", default=[], metavar="A:B")
     ap.add_argument("-v", "--verbose", action="store_true")
+    ap.add_argument("--trace", action="store_true", help="log every select change with its time")
     args = ap.parse_args(argv)
     asyncio.run(run(args))
 

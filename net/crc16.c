@@ -5,15 +5,12 @@
 
 uint16_t crc16_byte(uint16_t crc, uint8_t byte)
 {
+    /* In an unsigned int masked to 16 bits, so no conversion ever truncates. */
+    unsigned c = (unsigned)crc ^ ((unsigned)byte << 8);
     unsigned i;
-    crc = (uint16_t)(crc ^ (uint16_t)(byte << 8));
-    for (i = 0; i < 8u; i++) {
-        if ((crc & 0x8000u) != 0u)
-            crc = (uint16_t)(((unsigned)crc << 1) ^ 0x1021u);
-        else
-            crc = (uint16_t)((unsigned)crc << 1);
-    }
-    return crc;
+    for (i = 0; i < 8u; i++)
+        c = ((c & 0x8000u) != 0u ? (c << 1) ^ 0x1021u : c << 1) & 0xFFFFu;
+    return (uint16_t)c;
 }
 
 uint16_t crc16_update(uint16_t crc, const uint8_t *data, size_t len)

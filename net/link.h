@@ -33,8 +33,8 @@
 
 #define LINK_MAX_STATIONS 16u   /* station numbers 0..15; FRAME_BROADCAST = all */
 #define LINK_RTO_MS       250u
-#define LINK_RTO_MAX_MS   2000u
-#define LINK_MAX_RETRIES  10u
+#define LINK_RTO_MAX_MS   1000u
+#define LINK_MAX_RETRIES  8u
 
 #define LINK_OK          0
 #define LINK_EINVAL    (-22)

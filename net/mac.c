@@ -49,6 +49,7 @@ int mac_decide(struct mac *m, int carrier, int is_ack, uint32_t *wait_ms)
         m->drops++;
         return MAC_DROP;
     }
-    *wait_ms = (1u + mac_random(m) % mac_window(m->attempt)) * MAC_SLOT_MS;
+    *wait_ms = is_ack ? MAC_ACK_RETRY_MS
+                      : (1u + mac_random(m) % mac_window(m->attempt)) * MAC_SLOT_MS;
     return MAC_WAIT;
 }

@@ -7,8 +7,9 @@
  * the channel go idle do not all start at once), then sends if the carrier
  * is off; if the carrier is on it defers for a random backoff, the window
  * doubling per deferral up to MAC_CW_MAX, and gives up after
- * MAC_MAX_ATTEMPTS. Acknowledgements skip the initial wait: they follow the
- * frame they answer at once and so win the channel against new data.
+ * MAC_MAX_ATTEMPTS. Acknowledgements skip the initial wait and, while the
+ * carrier is on, retry every MAC_ACK_RETRY_MS instead of backing off: they
+ * follow the frame they answer at once and so win the channel against new data.
  */
 #ifndef NET_MAC_H
 #define NET_MAC_H
@@ -19,6 +20,7 @@
 #define MAC_CW_MIN        4u     /* slots */
 #define MAC_CW_MAX        64u
 #define MAC_MAX_ATTEMPTS  12u
+#define MAC_ACK_RETRY_MS  1u     /* an ACK waits out the tail of the frame it answers */
 
 enum mac_action { MAC_SEND = 0, MAC_WAIT = 1, MAC_DROP = 2 };
 

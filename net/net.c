@@ -8,7 +8,7 @@
 #define NET_EV_TX   0x2u
 #define NET_EV_REQ  0x4u
 #define NET_TXQ     8u
-#define NET_SEND_TIMEOUT_MS 60000u   /* above the link's ~17 s of retries */
+#define NET_SEND_TIMEOUT_MS 60000u   /* far above the link's ~8 s of retries */
 
 struct net_msg {
     uint8_t src;

@@ -39,7 +39,7 @@ int net_init(uint8_t station, uint32_t seed);
 uint8_t net_station(void);
 /* Sends len bytes to port of dst (a station or NET_BROADCAST). With
  * NET_RELIABLE (unicast only) it returns when dst acknowledged the whole
- * message (K_OK) or NET_EUNREACH when it never did (about 17 s of retries);
+ * message (K_OK) or NET_EUNREACH when it never did (about 8 s of retries);
  * without, the datagram (at most PACKET_DATA_MAX bytes) is queued and it
  * returns at once. Never blocks longer than 60 s (then K_ETIMEDOUT). */
 int net_send(uint8_t dst, uint8_t port, const void *data, size_t len, unsigned flags);

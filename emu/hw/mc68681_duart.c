@@ -77,6 +77,7 @@ typedef struct RadioState {
     bool tx_shifting;           /* a character is in the shift register */
     bool tx_holding;            /* and one waits in the holding register */
     uint8_t tx_hold;
+    uint8_t tx_shift;           /* the character in the shift register */
     uint8_t last_control;       /* last CONTROL sent (0xFF: none yet) */
     uint64_t rx_dropped;        /* characters heard while RX select was off */
 } RadioState;
@@ -330,19 +331,16 @@ static void radio_rx_tick(void *opaque)
     qemu_chr_fe_accept_input(&c->chr);
 }
 
-/* A character enters the shift register: it goes on air now. */
+/* A character enters the shift register; it reaches the air (or the own
+ * receiver in loop-back) when its last bit has gone, one character time later,
+ * provided the module is still keyed then. */
 static void radio_shift_out(MC68681DuartState *s, uint8_t byte)
 {
     RadioState *r = &s->radio;
 
     r->tx_shifting = true;
+    r->tx_shift = byte;
     timer_mod(r->tx_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + radio_char_ns(s));
-    if (radio_loopback(s)) {
-        radio_rx_enqueue(s, byte);          /* the module's test mode */
-    } else if (s->opr & RADIO_OP_TX) {
-        radio_send(s, RADIO_MSG_DATA, byte);
-    }
-    /* TX select off: the module is not keyed, the character is lost. */
 }
 
 static void radio_tx_tick(void *opaque)
@@ -351,6 +349,12 @@ static void radio_tx_tick(void *opaque)
     RadioState *r = &s->radio;
 
     r->tx_shifting = false;
+    if (radio_loopback(s)) {
+        radio_rx_enqueue(s, r->tx_shift);   /* the module's test mode */
+    } else if (s->opr & RADIO_OP_TX) {
+        radio_send(s, RADIO_MSG_DATA, r->tx_shift);
+    }
+    /* TX select off: the module is not keyed, the character is lost. */
     if (r->tx_holding) {
         r->tx_holding = false;
         radio_shift_out(s, r->tx_hold);

@@ -46,7 +46,9 @@ static void test_busy_channel_bounded(void **state)
     (void)state;
     mac_init(&m, 3);
     mac_begin(&m);
-    while ((a = mac_decide(&m, 1, 1, &w)) == MAC_WAIT) {
+    while ((a = mac_decide(&m, 1, 0, &w)) == MAC_WAIT) {
+        if (n == 0 && w <= MAC_CW_MIN * MAC_SLOT_MS && m.attempt == 0)
+            continue;                                  /* the initial wait */
         assert_true(w >= MAC_SLOT_MS && w <= MAC_CW_MAX * MAC_SLOT_MS);
         total += w;
         n++;
@@ -55,6 +57,21 @@ static void test_busy_channel_bounded(void **state)
     assert_int_equal(n, MAC_MAX_ATTEMPTS);
     assert_int_equal(m.drops, 1);
     assert_true(total < 20000u);                       /* gives up in bounded time */
+}
+
+static void test_ack_retries_quickly_and_bounded(void **state)
+{
+    struct mac m;
+    uint32_t w = 0;
+    unsigned n = 0;
+    (void)state;
+    mac_init(&m, 5);
+    mac_begin(&m);
+    while (mac_decide(&m, 1, 1, &w) == MAC_WAIT) {
+        assert_int_equal(w, MAC_ACK_RETRY_MS);
+        n++;
+    }
+    assert_int_equal(n, MAC_MAX_ATTEMPTS);
 }
 
 static void test_seeds_differ(void **state)
@@ -74,6 +91,7 @@ int main(void)
         cmocka_unit_test(test_ack_goes_at_once_when_idle),
         cmocka_unit_test(test_data_waits_within_window_then_sends),
         cmocka_unit_test(test_busy_channel_bounded),
+        cmocka_unit_test(test_ack_retries_quickly_and_bounded),
         cmocka_unit_test(test_seeds_differ),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

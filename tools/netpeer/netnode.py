@@ -91,6 +91,8 @@ class MediumProcess:
         cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
                "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
                "--noise", str(noise)]
+        if os.environ.get("NET_MEDIUM_TRACE"):
+            cmd.append("--trace")
         for a, b in out_of_range:
             cmd += ["--out-of-range", f"{a}:{b}"]
         self.sock = sock

@@ -7,7 +7,7 @@ import time
 from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, Frame,
                        FrameDecoder, Reassembly, encode_frame, fragments)
 
-RTO, RTO_MAX, MAX_RETRIES = 0.25, 2.0, 10
+RTO, RTO_MAX, MAX_RETRIES = 0.25, 1.0, 8
 MAX_STATIONS = 16
 
 

@@ -46,6 +46,3 @@ def air():
     yield a
     a.close()
 
-
-def pytest_configure(config):
-    config.addinivalue_line("markers", "slow: minutes of retries; make net-target-slow")

@@ -3,8 +3,6 @@ import re
 import struct
 import time
 
-import pytest
-
 from netpeer import MediumTransport, Peer, Unreachable
 
 
@@ -84,7 +82,6 @@ def test_host_peer_reports_unreachable_station(air):
     assert time.monotonic() - t0 < 40
 
 
-@pytest.mark.slow
 def test_station_that_leaves_is_reported_and_others_go_on(air):
     air.start_medium()
     stations = [0, 1, 2]
