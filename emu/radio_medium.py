@@ -9,8 +9,15 @@ bytes, both ways (emu/README.md, "Radio medium"):
     station -> medium   00 b  a character sent on air
                         01 c  selects: bit 0 RX select (OP0), bit 1 TX select (OP1)
                         02 n  hello: station number n (for out-of-range pairs, logs)
+                        03 0  sync: my quantum of virtual time is over (lock step)
     medium -> station   00 b  a character heard
                         01 c  carrier: 1 while any other station transmits
+                        03 0  go on: every synchronised station finished the quantum
+
+Lock step: a board started with radio-sync-ns > 0 sends sync at the end of
+each quantum of its virtual time and waits for go on; the medium answers once
+every station that has ever sent sync (and is still here) has done so for
+the round. So the boards' clocks advance together; host peers do not sync.
 
 A station is *on air* while only TX select is on (both = the module's
 loop-back test mode, which the board model keeps to itself), and *hears*
@@ -48,7 +55,7 @@ import signal
 import time
 import sys
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO = 0, 1, 2
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC = 0, 1, 2, 3
 SEL_RX, SEL_TX = 1, 2
 MAX_BACKLOG = 1 << 20
 
@@ -102,7 +109,9 @@ class Medium:
         for pair in args.out_of_range:
             a, b = (int(x) for x in pair.split(":"))
             self.out_of_range.add(frozenset((a, b)))
-        self.stats = dict(transmissions=0, characters=0, delivered=0, collisions=0,
+        self.sync_members = set()       # stations that take part in the lock step
+        self.sync_done = set()          # ... that finished the current round
+        self.stats = dict(sync_rounds=0, transmissions=0, characters=0, delivered=0, collisions=0,
                           collided_chars=0, lost=0, corrupted=0, noise_bursts=0,
                           stations=0)
 
@@ -195,9 +204,21 @@ class Medium:
             self.stats["delivered"] += 1
             r.send(bytes((MSG_DATA, out)))
 
+    def sync(self, st):
+        self.sync_members.add(st)
+        self.sync_done.add(st)
+        self.sync_check()
+
+    def sync_check(self):
+        if self.sync_members and self.sync_done >= self.sync_members:
+            self.stats["sync_rounds"] += 1
+            for m in self.sync_done:
+                m.send(bytes((MSG_SYNC, 0)))
+            self.sync_done = set()
+
     def set_selects(self, st, selects):
         if self.args.trace:
-            print(f"radio-medium: {time.monotonic():.4f} {st.name} selects {selects} "
+            print(f"radio-medium: round {self.stats['sync_rounds']} {st.name} selects {selects} "
                   f"after {st.tx_chars} characters", file=sys.stderr, flush=True)
         was = st.on_air()
         st.selects = selects & (SEL_RX | SEL_TX)
@@ -229,6 +250,8 @@ class Medium:
                         self.character(st, value)
                     elif kind == MSG_CONTROL:
                         self.set_selects(st, value)
+                    elif kind == MSG_SYNC:
+                        self.sync(st)
                     elif kind == MSG_HELLO:
                         st.number = value
                         self.log(f"peer #{st.serial} is station {value}")
@@ -240,6 +263,9 @@ class Medium:
             pass
         finally:
             self.stations.remove(st)
+            self.sync_members.discard(st)
+            self.sync_done.discard(st)
+            self.sync_check()
             if st.on_air():
                 self.end_transmission(st)
             self.update_carrier()

@@ -60,6 +60,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(MC68681DuartState, MC68681_DUART)
 #define RADIO_MSG_CONTROL 0x01  /* board -> medium: bit 0 RX select, bit 1 TX select */
 #define RADIO_MSG_CARRIER 0x01  /* medium -> board: 1 = someone transmits */
 #define RADIO_MSG_HELLO   0x02  /* board -> medium: station number (radio-station) */
+#define RADIO_MSG_SYNC    0x03  /* board -> medium: end of my time quantum; medium -> board: go on */
 #define RADIO_OP_RX 0x01        /* OP0: receive select */
 #define RADIO_OP_TX 0x02        /* OP1: transmit select */
 #define RADIO_RXQ 1024          /* characters in flight towards the FIFO */
@@ -80,6 +81,10 @@ typedef struct RadioState {
     uint8_t tx_shift;           /* the character in the shift register */
     uint8_t last_control;       /* last CONTROL sent (0xFF: none yet) */
     uint64_t rx_dropped;        /* characters heard while RX select was off */
+    uint32_t sync_ns;           /* property radio-sync-ns: lock-step quantum, 0 = off */
+    QEMUTimer *sync_timer;
+    bool sync_go;               /* the medium's go-on arrived */
+    uint64_t sync_rounds;
 } RadioState;
 
 typedef struct DuartChannel {
@@ -405,11 +410,49 @@ static void radio_receive(MC68681DuartState *s, const uint8_t *buf, int size)
         } else if (r->msg_type == RADIO_MSG_CARRIER) {
             r->carrier = buf[i] != 0;
             radio_update_carrier(s);
+        } else if (r->msg_type == RADIO_MSG_SYNC) {
+            r->sync_go = true;
         } else {
             qemu_log_mask(LOG_GUEST_ERROR, "mc68681: radio medium sent message %u\n",
                           r->msg_type);
         }
     }
+}
+
+/*
+ * Lock step (radio-sync-ns > 0, with -icount sleep=off): at the end of every
+ * quantum of virtual time the board tells the medium and waits, reading the
+ * socket synchronously, until the medium says go on, which it does once every
+ * synchronised station has finished the same quantum. Characters sent in a
+ * quantum reach the other boards before their next one, so all clocks advance
+ * together whatever the host's load (emu/README.md, "Radio medium").
+ */
+static void radio_sync_tick(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    RadioState *r = &s->radio;
+    CharBackend *chr = &s->ch[0].chr;
+    uint8_t byte;
+
+    if (!qemu_chr_fe_backend_connected(chr)) {
+        return;                             /* no medium: run free */
+    }
+    {
+        uint8_t msg[2] = { RADIO_MSG_SYNC, 0 };
+        if (qemu_chr_fe_write_all(chr, msg, 2) != 2) {
+            return;                         /* the medium is gone: run free */
+        }
+    }
+    r->sync_go = false;
+    while (!r->sync_go) {
+        if (qemu_chr_fe_read_all(chr, &byte, 1) != 1) {
+            return;                         /* gone while we waited: run free */
+        }
+        radio_receive(s, &byte, 1);
+    }
+    r->sync_rounds++;
+    duart_update_irq(s);
+    timer_mod(r->sync_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + r->sync_ns);
 }
 
 static void radio_event(void *opaque, QEMUChrEvent event)
@@ -421,6 +464,10 @@ static void radio_event(void *opaque, QEMUChrEvent event)
         radio_send(s, RADIO_MSG_HELLO, s->radio.station);
         s->radio.last_control = 0xFF;
         radio_send_control(s);
+        if (s->radio.sync_ns && !timer_pending(s->radio.sync_timer)) {
+            timer_mod(s->radio.sync_timer,
+                      qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + s->radio.sync_ns);
+        }
     } else if (event == CHR_EVENT_CLOSED) {
         /* The medium left: no carrier from it any more. */
         s->radio.carrier = false;
@@ -955,6 +1002,7 @@ static void duart_init(Object *obj)
     s->ct_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, ct_expire, s);
     s->radio.rx_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_rx_tick, s);
     s->radio.tx_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_tx_tick, s);
+    s->radio.sync_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_sync_tick, s);
     s->radio.last_control = 0xFF;
     s->ip = 0x3F;   /* pull-ups: every input high until the host says otherwise */
     object_property_add(obj, "input-port", "uint8", duart_get_u8,
@@ -968,6 +1016,7 @@ static Property duart_properties[] = {
     DEFINE_PROP_CHR("chardev-b", MC68681DuartState, ch[1].chr),
     DEFINE_PROP_BOOL("radio-medium", MC68681DuartState, radio.enabled, false),
     DEFINE_PROP_UINT8("radio-station", MC68681DuartState, radio.station, 0),
+    DEFINE_PROP_UINT32("radio-sync-ns", MC68681DuartState, radio.sync_ns, 0),
     DEFINE_PROP_END_OF_LIST(),
 };
 

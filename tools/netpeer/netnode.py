@@ -12,10 +12,11 @@ MODES = {"soak": 1, "echo": 2, "bench": 3}
 CONFIG = struct.Struct(">BBHHHII")
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-# Virtual time kept near the wall clock so timeouts on different boards mean
-# the same span of air time (emu/README.md, "Radio medium"); 2^8 ns per
-# instruction as everywhere else.
-ICOUNT = "shift=8,sleep=on,align=off"
+# The firmware's usual deterministic setting (2^8 ns per instruction, idle
+# time skipped), with the boards in lock step through the medium every
+# SYNC_NS of virtual time (emu/README.md, "Radio medium").
+ICOUNT = "shift=8,sleep=off"
+SYNC_NS = 500_000
 
 
 def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
@@ -40,7 +41,8 @@ def qemu_binary():
 class Board:
     """One emulated RoboCube whose radio joins the medium at `medium_sock`."""
 
-    def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, **config):
+    def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, sync_ns=SYNC_NS,
+                 **config):
         self.station = station
         self.elf = os.path.join(workdir, f"netnode-{station}.elf")
         patch_config(elf, self.elf, station, **config)
@@ -51,7 +53,8 @@ class Board:
                "-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
                "-serial", "chardev:air",
                "-global", "mc68681-duart.radio-medium=on",
-               "-global", f"mc68681-duart.radio-station={station}"]
+               "-global", f"mc68681-duart.radio-station={station}",
+               "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
         self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                      stderr=subprocess.STDOUT)
         self.reader = threading.Thread(target=self._read, daemon=True)
