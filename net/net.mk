@@ -18,7 +18,7 @@ net_test_srcs_link  := net/link.c net/packet.c
 net_test_srcs_mac   := net/mac.c
 net_test_libs_xdr   := -I/usr/include/tirpc -ltirpc
 
-ALL += $(NET_UNIT_TESTS)
+ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample
 CHECKS += net-unit net-target net-soak
 HOST_UNIT_CHECKS += net-unit
 
@@ -43,9 +43,14 @@ check-net-unit:
 
 NETNODE_ELF := $(call app_elf,netnode)
 
+# The XDR sample tool the Python comparison (test_xdr_python.py) runs.
+$(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/xdr.c net/xdr.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
+
 check-net-target:
 	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=netnode
+	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample
 	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
 	    $(ROOT)/net/tests/target
 

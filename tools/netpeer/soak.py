@@ -9,11 +9,12 @@ D those that arrived again; L = X - Y.
 import argparse
 import os
 import re
-import struct
 import sys
 import tempfile
 import threading
 import time
+
+import xdrlib3
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from netpeer import MediumTransport, Peer, Unreachable            # noqa: E402
@@ -24,9 +25,20 @@ HOST_STATION = 9
 
 
 def soak_message(sender, number):
-    """The XDR soak message of apps/netnode (u_int sender, u_int number, fill)."""
-    fill = bytes((number + i) & 0xFF for i in range(8))
-    return struct.pack(">II", sender, number) + fill
+    """The XDR soak message of apps/netnode (u_int sender, u_int number, opaque fill[8])."""
+    p = xdrlib3.Packer()
+    p.pack_uint(sender)
+    p.pack_uint(number)
+    p.pack_fopaque(8, bytes((number + i) & 0xFF for i in range(8)))
+    return p.get_buffer()
+
+
+def soak_unpack(msg):
+    u = xdrlib3.Unpacker(msg)
+    sender, number = u.unpack_uint(), u.unpack_uint()
+    u.unpack_fopaque(8)
+    u.done()
+    return sender, number
 
 
 def run(args):
@@ -56,9 +68,12 @@ def run(args):
                     if got is None:
                         continue
                     src, msg = got
-                    if len(msg) < 8 or src not in host["next"]:
+                    if src not in host["next"]:
                         continue
-                    sender, number = struct.unpack(">II", msg[:8])
+                    try:
+                        sender, number = soak_unpack(msg)
+                    except (xdrlib3.Error, EOFError):
+                        continue
                     if number == host["next"][src]:
                         host["inorder"][src] += 1
                         host["next"][src] += 1
