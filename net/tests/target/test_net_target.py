@@ -95,3 +95,16 @@ def test_station_that_leaves_is_reported_and_others_go_on(air):
         assert per[other] == (2, 0, 0), b.text()         # the survivors still talk
         assert sent[1] >= 1, b.text()                    # sends to station 2 failed ...
         assert re.search(r"send \d+ to 2 failed \(-113\)", b.text()), b.text()  # ... as unreachable
+
+
+def test_boards_go_on_when_the_medium_dies(air):
+    air.start_medium()
+    boards = [air.board(s, mode="soak", peers=[0, 1], messages=3, seed=s + 1, linger_ms=2000)
+              for s in (0, 1)]
+    for b in boards:
+        assert b.wait_for("up, mode 1", 10), b.text()
+    air.medium.stop()                                    # the air is gone mid-transfer
+    for b in boards:
+        assert b.wait_for("netnode: done", 60), b.text() # no board hangs in the lock step
+        per, sent = soak_results(b.text())
+        assert sent[0] + sent[1] == 3                    # every send came back
