@@ -108,3 +108,18 @@ def test_boards_go_on_when_the_medium_dies(air):
         assert b.wait_for("netnode: done", 60), b.text() # no board hangs in the lock step
         per, sent = soak_results(b.text())
         assert sent[0] + sent[1] == 3                    # every send came back
+
+
+def test_host_peer_cli_send_and_reply(air):
+    import os
+    import subprocess
+    import sys
+    air.start_medium()
+    board = air.board(2, mode="echo", linger_ms=60000)
+    assert board.wait_for("station 2 up", 10), board.text()
+    tools = os.path.join(os.path.dirname(__file__), "..", "..", "..", "tools")
+    r = subprocess.run([sys.executable, "-m", "netpeer", "--socket", air.sock, "--station", "9",
+                        "send", "2", "1", "hello cube", "--wait-reply", "10"],
+                       cwd=tools, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "2: hello cube"
