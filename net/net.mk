@@ -103,8 +103,10 @@ $(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*
 define net_fuzz_run
 	@p=0; f=0; for t in $(NET_FUZZERS); do \
 	    mkdir -p $(NET_BUILD)/fuzz/corpus-$$t; \
-	    if (cd $(NET_BUILD)/fuzz && ./fuzz_$$t -runs=$(1) -seed=1 corpus-$$t 2>&1 | tail -2); \
-	    then p=$$((p + 1)); else f=$$((f + 1)); echo "fuzz_$$t: FINDING (see $(NET_BUILD)/fuzz)"; fi; \
+	    out=$$(cd $(NET_BUILD)/fuzz && ./fuzz_$$t -runs=$(1) -seed=1 corpus-$$t 2>&1); r=$$?; \
+	    echo "$$out" | tail -2 | sed "s/^/fuzz_$$t: /"; \
+	    if [ $$r -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); \
+	        echo "fuzz_$$t: FINDING (crash file in $(NET_BUILD)/fuzz)"; fi; \
 	done; $(2)
 endef
 
