@@ -12,6 +12,15 @@
  * crystal or X1/16, ISR counter-ready, start/stop commands) in virtual time.
  * Host interface (QOM): "input-port" (read/write), "opr" and "output-pins"
  * (read-only).
+ *
+ * Radio mode (property "radio-medium", off by default): channel A is the
+ * BiM-433 module on a shared medium (emu/radio_medium.py).  Its chardev then
+ * carries 2-byte messages instead of raw characters (protocol in
+ * emu/README.md, "Radio medium"), characters take their real duration at the
+ * programmed baud rate in virtual time (transmit holding + shift register,
+ * received characters paced one per character time), OP0/OP1 gate reception
+ * and transmission (both = the module's loop-back test mode) and IP0 follows
+ * the medium's carrier.
  */
 #include "qemu/osdep.h"
 #include "qemu/log.h"
@@ -46,6 +55,38 @@ OBJECT_DECLARE_SIMPLE_TYPE(MC68681DuartState, MC68681_DUART)
 #define ISR_RXRDYB  0x20
 #define ISR_IPCHG   0x80
 
+/* Radio mode: messages on channel A's chardev (emu/README.md). */
+#define RADIO_MSG_DATA    0x00  /* both ways: one character */
+#define RADIO_MSG_CONTROL 0x01  /* board -> medium: bit 0 RX select, bit 1 TX select */
+#define RADIO_MSG_CARRIER 0x01  /* medium -> board: 1 = someone transmits */
+#define RADIO_MSG_HELLO   0x02  /* board -> medium: station number (radio-station) */
+#define RADIO_MSG_SYNC    0x03  /* board -> medium: end of my time quantum; medium -> board: go on */
+#define RADIO_OP_RX 0x01        /* OP0: receive select */
+#define RADIO_OP_TX 0x02        /* OP1: transmit select */
+#define RADIO_RXQ 1024          /* characters in flight towards the FIFO */
+
+typedef struct RadioState {
+    bool enabled;               /* property radio-medium */
+    uint8_t station;            /* property radio-station, sent in HELLO */
+    bool carrier;               /* the medium's carrier */
+    uint8_t msg_type;           /* first byte of a message being received */
+    bool msg_half;              /* msg_type holds a first byte */
+    uint8_t rxq[RADIO_RXQ];     /* characters on their way to the FIFO */
+    unsigned rxq_head, rxq_count;
+    QEMUTimer *rx_timer;        /* next character reaches the FIFO */
+    QEMUTimer *tx_timer;        /* the shift register finishes a character */
+    bool tx_shifting;           /* a character is in the shift register */
+    bool tx_holding;            /* and one waits in the holding register */
+    uint8_t tx_hold;
+    uint8_t tx_shift;           /* the character in the shift register */
+    uint8_t last_control;       /* last CONTROL sent (0xFF: none yet) */
+    uint64_t rx_dropped;        /* characters heard while RX select was off */
+    uint32_t sync_ns;           /* property radio-sync-ns: lock-step quantum, 0 = off */
+    QEMUTimer *sync_timer;
+    bool sync_go;               /* the medium's go-on arrived */
+    uint64_t sync_rounds;
+} RadioState;
+
 typedef struct DuartChannel {
     CharBackend chr;
     uint8_t mr1, mr2;
@@ -77,6 +118,8 @@ struct MC68681DuartState {
     int64_t ct_origin_ns;   /* events are counted from here ... */
     uint32_t ct_origin_value;   /* ... where the count was this */
     int64_t ct_cleared_ns;  /* events up to here are consumed (ISR[3] cleared) */
+
+    RadioState radio;       /* channel A in radio mode */
 };
 
 static MC68681DuartState *the_duart;
@@ -88,6 +131,11 @@ uint8_t robocube_duart_opr(void)
 
 /* ---- interrupts ---------------------------------------------------------- */
 
+static bool radio_channel(DuartChannel *c)
+{
+    return the_duart && the_duart->radio.enabled && c == &the_duart->ch[0];
+}
+
 static uint8_t channel_sr(DuartChannel *c)
 {
     uint8_t sr = 0;
@@ -98,7 +146,16 @@ static uint8_t channel_sr(DuartChannel *c)
     if (c->rx_count == RX_FIFO_DEPTH) {
         sr |= SR_FFULL;
     }
-    if (c->tx_enabled) {
+    if (c->tx_enabled && radio_channel(c)) {
+        /* Radio: characters take their time (holding + shift register). */
+        RadioState *r = &the_duart->radio;
+        if (!r->tx_holding) {
+            sr |= SR_TXRDY;
+        }
+        if (!r->tx_shifting) {
+            sr |= SR_TXEMT;
+        }
+    } else if (c->tx_enabled) {
         /* Transmission is instantaneous: holding and shift register empty. */
         sr |= SR_TXRDY | SR_TXEMT;
     }
@@ -109,6 +166,8 @@ static uint8_t channel_sr(DuartChannel *c)
 }
 
 static bool ct_ready(MC68681DuartState *s);
+static uint32_t ct_clock_hz(MC68681DuartState *s);
+static uint64_t ct_preload_cycles(MC68681DuartState *s);
 
 static uint8_t duart_isr(MC68681DuartState *s)
 {
@@ -155,10 +214,275 @@ static void channel_push_rx(MC68681DuartState *s, DuartChannel *c, uint8_t byte)
     }
 }
 
+/* ---- radio mode (channel A on the shared medium) -------------------------- */
+
+static void duart_set_ip(MC68681DuartState *s, uint8_t pins);
+
+/* Baud rate of channel A's transmitter from CSRA and ACR bit 7 (baud-rate
+ * set); 10 bits per character (start, 8 data, stop). Settings the model
+ * cannot time (IP3/TxC clocks) count as 19200, the radio's usual rate. */
+static uint32_t radio_baud(MC68681DuartState *s)
+{
+    static const uint32_t set1[13] = { 50, 110, 134, 200, 300, 600, 1200, 1050,
+                                       2400, 4800, 7200, 9600, 38400 };
+    static const uint32_t set2[13] = { 75, 110, 134, 150, 300, 600, 1200, 2000,
+                                       2400, 4800, 1800, 9600, 19200 };
+    unsigned code = s->ch[0].csr & 0x0F;
+
+    if (code < 13) {
+        return (s->acr & 0x80) ? set2[code] : set1[code];
+    }
+    if (code == 13 && ct_clock_hz(s)) {
+        /* Counter/timer: square wave X1 / (2 preload), 16 clocks per bit. */
+        uint64_t baud = ct_clock_hz(s) / (2 * ct_preload_cycles(s) * 16);
+        return baud ? baud : 1;
+    }
+    return 19200;
+}
+
+static int64_t radio_char_ns(MC68681DuartState *s)
+{
+    return (int64_t)muldiv64(10, NANOSECONDS_PER_SECOND, radio_baud(s));
+}
+
+static void radio_send(MC68681DuartState *s, uint8_t type, uint8_t value)
+{
+    uint8_t msg[2] = { type, value };
+
+    /* Never blocks: a stalled or dead medium loses the characters (as the
+     * air would) instead of stopping the board. */
+    if (qemu_chr_fe_backend_connected(&s->ch[0].chr)) {
+        qemu_chr_fe_write(&s->ch[0].chr, msg, 2);
+    }
+}
+
+static uint8_t radio_selects(MC68681DuartState *s)
+{
+    return s->opr & (RADIO_OP_RX | RADIO_OP_TX);
+}
+
+static bool radio_loopback(MC68681DuartState *s)
+{
+    return radio_selects(s) == (RADIO_OP_RX | RADIO_OP_TX);
+}
+
+/* IP0 (carrier detect, low = carrier) follows the medium's carrier and stays
+ * low while received characters are still arriving. */
+static void radio_update_carrier(MC68681DuartState *s)
+{
+    RadioState *r = &s->radio;
+    bool carrier = r->carrier || r->rxq_count;
+    uint8_t pins = carrier ? (s->ip & ~1) : (s->ip | 1);
+
+    if (pins != s->ip) {
+        duart_set_ip(s, pins);
+    }
+}
+
+static void radio_send_control(MC68681DuartState *s)
+{
+    uint8_t ctl = radio_selects(s);
+
+    if (s->radio.enabled && ctl != s->radio.last_control) {
+        s->radio.last_control = ctl;
+        radio_send(s, RADIO_MSG_CONTROL, ctl);
+    }
+}
+
+static void radio_rx_enqueue(MC68681DuartState *s, uint8_t byte)
+{
+    RadioState *r = &s->radio;
+
+    if (r->rxq_count == RADIO_RXQ) {
+        r->rx_dropped++;
+        return;
+    }
+    r->rxq[(r->rxq_head + r->rxq_count++) % RADIO_RXQ] = byte;
+    if (!timer_pending(r->rx_timer)) {
+        /* The character needs one character time to arrive. */
+        timer_mod(r->rx_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) +
+                  radio_char_ns(s));
+    }
+    radio_update_carrier(s);
+}
+
+static void channel_push_rx(MC68681DuartState *s, DuartChannel *c, uint8_t byte);
+
+static void radio_rx_tick(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    RadioState *r = &s->radio;
+    DuartChannel *c = &s->ch[0];
+
+    if (r->rxq_count) {
+        uint8_t byte = r->rxq[r->rxq_head];
+
+        r->rxq_head = (r->rxq_head + 1) % RADIO_RXQ;
+        r->rxq_count--;
+        /* The module hears only with RX select on; the DUART only with its
+         * receiver enabled (a full FIFO overruns, as on the chip). */
+        if ((s->opr & RADIO_OP_RX) && c->rx_enabled) {
+            channel_push_rx(s, c, byte);
+        } else {
+            r->rx_dropped++;
+        }
+    }
+    if (r->rxq_count) {
+        timer_mod(r->rx_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) +
+                  radio_char_ns(s));
+    }
+    radio_update_carrier(s);
+    duart_update_irq(s);
+    qemu_chr_fe_accept_input(&c->chr);
+}
+
+/* A character enters the shift register; it reaches the air (or the own
+ * receiver in loop-back) when its last bit has gone, one character time later,
+ * provided the module is still keyed then. */
+static void radio_shift_out(MC68681DuartState *s, uint8_t byte)
+{
+    RadioState *r = &s->radio;
+
+    r->tx_shifting = true;
+    r->tx_shift = byte;
+    timer_mod(r->tx_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + radio_char_ns(s));
+}
+
+static void radio_tx_tick(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    RadioState *r = &s->radio;
+
+    r->tx_shifting = false;
+    if (radio_loopback(s)) {
+        radio_rx_enqueue(s, r->tx_shift);   /* the module's test mode */
+    } else if (s->opr & RADIO_OP_TX) {
+        radio_send(s, RADIO_MSG_DATA, r->tx_shift);
+    }
+    /* TX select off: the module is not keyed, the character is lost. */
+    if (r->tx_holding) {
+        r->tx_holding = false;
+        radio_shift_out(s, r->tx_hold);
+    }
+    duart_update_irq(s);
+}
+
+static void radio_transmit(MC68681DuartState *s, uint8_t byte)
+{
+    RadioState *r = &s->radio;
+
+    if (!r->tx_shifting) {
+        radio_shift_out(s, byte);
+    } else if (!r->tx_holding) {
+        r->tx_holding = true;
+        r->tx_hold = byte;
+    } else {
+        /* Writing TB while TxRDY is off overwrites the holding register. */
+        r->tx_hold = byte;
+    }
+}
+
+static int radio_can_receive(MC68681DuartState *s)
+{
+    /* Messages are taken as long as the paced queue has room for them. */
+    return 2 * (RADIO_RXQ - s->radio.rxq_count);
+}
+
+static void radio_receive(MC68681DuartState *s, const uint8_t *buf, int size)
+{
+    RadioState *r = &s->radio;
+    int i;
+
+    for (i = 0; i < size; i++) {
+        if (!r->msg_half) {
+            r->msg_type = buf[i];
+            r->msg_half = true;
+            continue;
+        }
+        r->msg_half = false;
+        if (r->msg_type == RADIO_MSG_DATA) {
+            /* Heard only with RX select on and not in loop-back mode. */
+            if (radio_selects(s) == RADIO_OP_RX) {
+                radio_rx_enqueue(s, buf[i]);
+            } else {
+                r->rx_dropped++;
+            }
+        } else if (r->msg_type == RADIO_MSG_CARRIER) {
+            r->carrier = buf[i] != 0;
+            radio_update_carrier(s);
+        } else if (r->msg_type == RADIO_MSG_SYNC) {
+            r->sync_go = true;
+        } else {
+            qemu_log_mask(LOG_GUEST_ERROR, "mc68681: radio medium sent message %u\n",
+                          r->msg_type);
+        }
+    }
+}
+
+/*
+ * Lock step (radio-sync-ns > 0, with -icount sleep=off): at the end of every
+ * quantum of virtual time the board tells the medium and waits, reading the
+ * socket synchronously, until the medium says go on, which it does once every
+ * synchronised station has finished the same quantum. Characters sent in a
+ * quantum reach the other boards before their next one, so all clocks advance
+ * together whatever the host's load (emu/README.md, "Radio medium").
+ */
+static void radio_sync_tick(void *opaque)
+{
+    MC68681DuartState *s = opaque;
+    RadioState *r = &s->radio;
+    CharBackend *chr = &s->ch[0].chr;
+    uint8_t byte;
+
+    if (!qemu_chr_fe_backend_connected(chr)) {
+        return;                             /* no medium: run free */
+    }
+    {
+        uint8_t msg[2] = { RADIO_MSG_SYNC, 0 };
+        if (qemu_chr_fe_write_all(chr, msg, 2) != 2) {
+            return;                         /* the medium is gone: run free */
+        }
+    }
+    r->sync_go = false;
+    while (!r->sync_go) {
+        if (qemu_chr_fe_read_all(chr, &byte, 1) != 1) {
+            return;                         /* gone while we waited: run free */
+        }
+        radio_receive(s, &byte, 1);
+    }
+    r->sync_rounds++;
+    duart_update_irq(s);
+    timer_mod(r->sync_timer, qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + r->sync_ns);
+}
+
+static void radio_event(void *opaque, QEMUChrEvent event)
+{
+    MC68681DuartState *s = opaque;
+
+    if (event == CHR_EVENT_OPENED) {
+        s->radio.msg_half = false;
+        radio_send(s, RADIO_MSG_HELLO, s->radio.station);
+        s->radio.last_control = 0xFF;
+        radio_send_control(s);
+        if (s->radio.sync_ns && !timer_pending(s->radio.sync_timer)) {
+            timer_mod(s->radio.sync_timer,
+                      qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL) + s->radio.sync_ns);
+        }
+    } else if (event == CHR_EVENT_CLOSED) {
+        /* The medium left: no carrier from it any more. */
+        s->radio.carrier = false;
+        radio_update_carrier(s);
+    }
+}
+
 static void channel_transmit(MC68681DuartState *s, DuartChannel *c, uint8_t byte)
 {
     if (!c->tx_enabled) {
         qemu_log_mask(LOG_GUEST_ERROR, "mc68681: write to TB with transmitter off\n");
+        return;
+    }
+    if (radio_channel(c) && (c->mr2 >> 6) != 2) {
+        radio_transmit(s, byte);
         return;
     }
     switch (c->mr2 >> 6) {
@@ -203,6 +527,9 @@ static void duart_receive(MC68681DuartState *s, DuartChannel *c,
 static int duart_can_receive_a(void *opaque)
 {
     MC68681DuartState *s = opaque;
+    if (s->radio.enabled) {
+        return radio_can_receive(s);
+    }
     return duart_can_receive(&s->ch[0]);
 }
 
@@ -215,6 +542,11 @@ static int duart_can_receive_b(void *opaque)
 static void duart_receive_a(void *opaque, const uint8_t *buf, int size)
 {
     MC68681DuartState *s = opaque;
+    if (s->radio.enabled) {
+        radio_receive(s, buf, size);
+        duart_update_irq(s);
+        return;
+    }
     duart_receive(s, &s->ch[0], buf, size);
 }
 
@@ -561,9 +893,11 @@ static void duart_write(void *opaque, hwaddr addr, uint64_t value, unsigned size
         break;
     case 0xE:
         s->opr |= v;
+        radio_send_control(s);
         break;
     case 0xF:
         s->opr &= ~v;
+        radio_send_control(s);
         break;
     }
     duart_update_irq(s);
@@ -606,6 +940,14 @@ static void duart_reset(DeviceState *dev)
     s->ct_origin_ns = s->ct_cleared_ns = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
     s->ct_origin_value = 0;
     timer_del(s->ct_timer);
+    s->radio.rxq_head = s->radio.rxq_count = 0;
+    s->radio.tx_shifting = s->radio.tx_holding = false;
+    timer_del(s->radio.rx_timer);
+    timer_del(s->radio.tx_timer);
+    if (s->radio.enabled) {
+        radio_send_control(s);
+        radio_update_carrier(s);
+    }
     duart_update_irq(s);
 }
 
@@ -647,7 +989,7 @@ static void duart_realize(DeviceState *dev, Error **errp)
     MC68681DuartState *s = MC68681_DUART(dev);
 
     qemu_chr_fe_set_handlers(&s->ch[0].chr, duart_can_receive_a, duart_receive_a,
-                             NULL, NULL, s, NULL, true);
+                             s->radio.enabled ? radio_event : NULL, NULL, s, NULL, true);
     qemu_chr_fe_set_handlers(&s->ch[1].chr, duart_can_receive_b, duart_receive_b,
                              NULL, NULL, s, NULL, true);
 }
@@ -658,6 +1000,10 @@ static void duart_init(Object *obj)
 
     memory_region_init_io(&s->iomem, obj, &duart_ops, s, "mc68681.duart", 0x10);
     s->ct_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, ct_expire, s);
+    s->radio.rx_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_rx_tick, s);
+    s->radio.tx_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_tx_tick, s);
+    s->radio.sync_timer = timer_new_ns(QEMU_CLOCK_VIRTUAL, radio_sync_tick, s);
+    s->radio.last_control = 0xFF;
     s->ip = 0x3F;   /* pull-ups: every input high until the host says otherwise */
     object_property_add(obj, "input-port", "uint8", duart_get_u8,
                         duart_set_input_port, NULL, NULL);
@@ -668,6 +1014,9 @@ static void duart_init(Object *obj)
 static Property duart_properties[] = {
     DEFINE_PROP_CHR("chardev-a", MC68681DuartState, ch[0].chr),
     DEFINE_PROP_CHR("chardev-b", MC68681DuartState, ch[1].chr),
+    DEFINE_PROP_BOOL("radio-medium", MC68681DuartState, radio.enabled, false),
+    DEFINE_PROP_UINT8("radio-station", MC68681DuartState, radio.station, 0),
+    DEFINE_PROP_UINT32("radio-sync-ns", MC68681DuartState, radio.sync_ns, 0),
     DEFINE_PROP_END_OF_LIST(),
 };
 

@@ -1,0 +1,317 @@
+/* The network service thread and the application interface; see net.h. */
+#include "net.h"
+#include "kernel.h"
+#include "mac.h"
+#include "radio.h"
+
+#define NET_EV_RX   0x1u
+#define NET_EV_TX   0x2u
+#define NET_EV_REQ  0x4u
+#define NET_TXQ     8u
+#define NET_SEND_TIMEOUT_MS 60000u   /* far above the link's ~8 s of retries */
+
+struct net_msg {
+    uint8_t src;
+    uint8_t port;
+    uint16_t len;
+    uint8_t data[NET_MSG_MAX];
+};
+
+struct net_request {
+    uint8_t dst, port;
+    const uint8_t *data;
+    size_t len;
+    unsigned flags;
+    int result;
+    uint32_t generation;             /* of the net_send call it belongs to */
+};
+
+static struct k_thread net_thread;
+K_STACK_DEFINE(net_stack, 3072);
+static struct k_event net_ev;
+static struct k_mutex net_send_lock;  /* one application request at a time */
+static struct k_sem net_send_done;
+static struct net_request net_req;
+static volatile uint8_t net_req_pending;
+static volatile uint32_t net_req_generation;
+static uint32_t net_active_generation;
+
+static struct k_mq net_port_q[NET_PORTS];
+static struct net_msg net_port_store[NET_PORTS][NET_PORT_QUEUE];
+static struct net_msg net_rx_msg;     /* the service thread's scratch */
+
+static struct link net_link;
+static struct mac net_mac;
+static struct frame net_txq[NET_TXQ];
+static unsigned net_txq_head, net_txq_count;
+static uint8_t net_on_air;            /* the queue's head is being transmitted */
+static uint32_t net_mac_wake;         /* ms; valid while net_mac_waiting */
+static uint8_t net_mac_waiting, net_mac_started;
+static uint8_t net_encoded[FRAME_ENCODED_MAX];
+static uint32_t net_port_overflows, net_txq_drops;
+static uint8_t net_self;
+static uint8_t net_running;
+
+static void net_transmit_cb(void *ctx, const struct frame *f)
+{
+    (void)ctx;
+    if (net_txq_count == NET_TXQ) {
+        net_txq_drops++;
+        return;
+    }
+    if (f->type == LINK_ACK && net_txq_count > 0u) {
+        /* ACKs go before queued data, but never before the frame in arbitration. */
+        unsigned i, at = (net_txq_head + 1u) % NET_TXQ;
+        for (i = net_txq_count; i > 1u; i--)
+            net_txq[(net_txq_head + i) % NET_TXQ] = net_txq[(net_txq_head + i - 1u) % NET_TXQ];
+        net_txq[net_txq_count == 1u ? (net_txq_head + 1u) % NET_TXQ : at] = *f;
+    } else {
+        net_txq[(net_txq_head + net_txq_count) % NET_TXQ] = *f;
+    }
+    net_txq_count++;
+}
+
+static void net_deliver_cb(void *ctx, uint8_t src, uint8_t port, const uint8_t *msg, size_t len)
+{
+    size_t i;
+    (void)ctx;
+    net_rx_msg.src = src;
+    net_rx_msg.port = port;
+    net_rx_msg.len = (uint16_t)len;
+    for (i = 0; i < len; i++)
+        net_rx_msg.data[i] = msg[i];
+    if (k_mq_send_ticks(&net_port_q[port], &net_rx_msg, K_NO_WAIT) != K_OK)
+        net_port_overflows++;
+}
+
+static int net_can_deliver_cb(void *ctx, uint8_t port)
+{
+    (void)ctx;
+    return port < NET_PORTS && k_mq_count(&net_port_q[port]) < (int)NET_PORT_QUEUE;
+}
+
+static void net_send_done_cb(void *ctx, int result)
+{
+    (void)ctx;
+    if (net_active_generation == net_req_generation) {
+        net_req.result = result;
+        (void)k_sem_post(&net_send_done);
+    }
+}
+
+static void net_pop_tx(uint32_t now)
+{
+    uint8_t type = net_txq[net_txq_head].type;
+    net_txq_head = (net_txq_head + 1u) % NET_TXQ;
+    net_txq_count--;
+    net_mac_started = 0;
+    net_mac_waiting = 0;
+    link_frame_done(&net_link, type, now);
+}
+
+/* Arbitration and transmission of the queue's head; returns ms to wait. */
+static uint32_t net_pump_tx(uint32_t now)
+{
+    while (net_txq_count > 0u && !net_on_air) {
+        const struct frame *f = &net_txq[net_txq_head];
+        uint32_t wait = 0;
+        int action;
+        size_t n;
+        if (net_mac_waiting) {
+            if ((int32_t)(now - net_mac_wake) < 0)
+                return net_mac_wake - now;
+            net_mac_waiting = 0;
+        }
+        if (!net_mac_started) {
+            mac_begin(&net_mac);
+            net_mac_started = 1;
+        }
+        action = mac_decide(&net_mac, radio_carrier(), f->type == LINK_ACK, &wait);
+        if (action == MAC_WAIT) {
+            net_mac_waiting = 1;
+            net_mac_wake = now + wait;
+            return wait;
+        }
+        if (action == MAC_DROP) {
+            net_pop_tx(now);
+            continue;
+        }
+        n = frame_encode(f, net_encoded, sizeof net_encoded);
+        if (n == 0u || radio_transmit(net_encoded, n) != K_OK) {
+            net_pop_tx(now);
+            continue;
+        }
+        net_on_air = 1;
+        return UINT32_MAX;        /* the TX-done event comes back */
+    }
+    return UINT32_MAX;
+}
+
+static void *net_main(void *arg)
+{
+    (void)arg;
+    for (;;) {
+        uint32_t now = k_uptime_ms(), wait, w, matched = 0;
+        struct frame f;
+        k_ticks_t ticks;
+
+        while (radio_receive(&f))
+            link_receive(&net_link, &f, now);
+        if (net_req_pending && !link_busy(&net_link)) {
+            int rc;
+            net_req_pending = 0;
+            net_active_generation = net_req_generation;
+            rc = link_send(&net_link, net_req.dst, net_req.port, net_req.data, net_req.len,
+                           net_req.flags, now);
+            if (rc != LINK_OK || (net_req.flags & NET_RELIABLE) == 0u ||
+                net_req.dst == NET_BROADCAST) {
+                net_req.result = rc;
+                (void)k_sem_post(&net_send_done);
+            }
+        }
+        wait = link_poll(&net_link, now);
+        w = net_pump_tx(now);
+        if (w < wait)
+            wait = w;
+        ticks = wait == UINT32_MAX ? k_ms_to_ticks(1000) : k_ms_to_ticks(wait);
+        if (ticks == 0u)
+            ticks = 1;
+        (void)k_event_wait(&net_ev, NET_EV_RX | NET_EV_TX | NET_EV_REQ,
+                           K_EVENT_ANY | K_EVENT_CLEAR, ticks, &matched);
+        if ((matched & NET_EV_TX) != 0u && net_on_air && !radio_tx_busy()) {
+            net_on_air = 0;
+            net_pop_tx(k_uptime_ms());
+        }
+    }
+    return NULL;
+}
+
+int net_init(uint8_t station, uint32_t seed)
+{
+    static const struct link_env env = {
+        net_transmit_cb, net_deliver_cb, net_send_done_cb, net_can_deliver_cb, NULL
+    };
+    unsigned i;
+    int rc;
+    if (net_running || station >= LINK_MAX_STATIONS)
+        return K_EINVAL;
+    net_self = station;
+    if ((rc = k_event_init(&net_ev)) != K_OK || (rc = k_mutex_init(&net_send_lock)) != K_OK ||
+        (rc = k_sem_init(&net_send_done, 0, 1)) != K_OK)
+        return rc;
+    for (i = 0; i < NET_PORTS; i++) {
+        rc = k_mq_init(&net_port_q[i], net_port_store[i], sizeof(struct net_msg), NET_PORT_QUEUE);
+        if (rc != K_OK)
+            return rc;
+    }
+    link_init(&net_link, station, &env, seed * 2654435761u + station + 1u);
+    mac_init(&net_mac, seed * 40503u + station * 7919u + 1u);
+    net_txq_head = net_txq_count = 0;
+    if ((rc = radio_init(&net_ev, NET_EV_RX, NET_EV_TX)) != K_OK)
+        return rc;
+    rc = k_thread_create(&net_thread, "net", net_main, NULL, net_stack, sizeof net_stack,
+                         NET_PRIO);
+    if (rc == K_OK)
+        net_running = 1;
+    return rc;
+}
+
+uint8_t net_station(void)
+{
+    return net_self;
+}
+
+int net_send(uint8_t dst, uint8_t port, const void *data, size_t len, unsigned flags)
+{
+    int rc;
+    if (!net_running)
+        return K_EINVAL;
+    rc = k_mutex_lock_ticks(&net_send_lock, k_ms_to_ticks(NET_SEND_TIMEOUT_MS));
+    if (rc != K_OK && rc != K_EOWNERDEAD)
+        return rc;
+    (void)k_sem_trywait(&net_send_done);          /* a stale post of an abandoned call */
+    net_req.dst = dst;
+    net_req.port = port;
+    net_req.data = data;
+    net_req.len = len;
+    net_req.flags = flags;
+    net_req.result = K_ETIMEDOUT;
+    net_req_generation++;
+    net_req_pending = 1;
+    (void)k_event_set(&net_ev, NET_EV_REQ);
+    rc = k_sem_wait_ticks(&net_send_done, k_ms_to_ticks(NET_SEND_TIMEOUT_MS));
+    if (rc == K_OK) {
+        rc = net_req.result;
+    } else {
+        /* Abandoned: the service thread must not report into the next call. */
+        net_req_pending = 0;
+        net_req_generation++;
+        rc = K_ETIMEDOUT;
+    }
+    (void)k_mutex_unlock(&net_send_lock);
+    return rc;
+}
+
+int net_recv(uint8_t port, void *buf, size_t size, uint8_t *src, uint32_t timeout_ms)
+{
+    /* Static, one per port: a message is 516 bytes, too big for application
+     * stacks; one reader at a time per port is the contract (net.h). */
+    static struct net_msg msgs[NET_PORTS];
+    struct net_msg *m;
+    size_t i, n;
+    int rc;
+    if (!net_running || port >= NET_PORTS || (buf == NULL && size > 0u))
+        return K_EINVAL;
+    m = &msgs[port];
+    rc = k_mq_receive_ticks(&net_port_q[port], m,
+                            timeout_ms == 0u ? K_NO_WAIT : k_ms_to_ticks(timeout_ms));
+    if (rc == K_EAGAIN)
+        return K_ETIMEDOUT;
+    if (rc != K_OK)
+        return rc;
+    n = m->len < size ? m->len : size;
+    for (i = 0; i < n; i++)
+        ((uint8_t *)buf)[i] = m->data[i];
+    if (src != NULL)
+        *src = m->src;
+    return (int)m->len;
+}
+
+void net_stats_get(struct net_stats *out)
+{
+    struct radio_stats r;
+    struct frame_rx_stats fr;
+    radio_stats_get(&r, &fr);
+    out->frames_sent = net_link.stats.frames_sent;
+    out->frames_received = fr.frames;
+    out->crc_errors = fr.crc_errors;
+    out->malformed = fr.malformed;
+    out->retransmissions = net_link.stats.retransmissions;
+    out->collisions = r.collisions;
+    out->deferrals = net_mac.deferrals;
+    out->mac_drops = net_mac.drops + net_txq_drops;
+    out->duplicates = net_link.stats.duplicates;
+    out->delivered = net_link.stats.delivered;
+    out->unreachable = net_link.stats.unreachable;
+    out->port_overflows = net_port_overflows + net_link.stats.rx_busy;
+    out->rx_overruns = r.rx_overruns;
+}
+
+int net_stats_print(void)
+{
+    struct net_stats s;
+    net_stats_get(&s);
+    k_printf("net: station %u\n", (unsigned)net_self);
+    k_printf("  frames sent %lu, received %lu, crc errors %lu, malformed %lu\n",
+             (unsigned long)s.frames_sent, (unsigned long)s.frames_received,
+             (unsigned long)s.crc_errors, (unsigned long)s.malformed);
+    k_printf("  retransmissions %lu, collisions %lu, deferrals %lu, mac drops %lu\n",
+             (unsigned long)s.retransmissions, (unsigned long)s.collisions,
+             (unsigned long)s.deferrals, (unsigned long)s.mac_drops);
+    k_printf("  messages delivered %lu, duplicates dropped %lu, unreachable %lu, "
+             "port overflows %lu, rx overruns %lu\n",
+             (unsigned long)s.delivered, (unsigned long)s.duplicates,
+             (unsigned long)s.unreachable, (unsigned long)s.port_overflows,
+             (unsigned long)s.rx_overruns);
+    return 0;
+}

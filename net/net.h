@@ -1,0 +1,54 @@
+/*
+ * The network stack of a RoboCube: a kernel service thread above the
+ * applications (paper, section 3) running the layers of this folder:
+ *   radio.c   interrupt-driven byte stream <-> frames (frame.c, crc16.c)
+ *   mac.c     listen before talk, random backoff, bounded attempts
+ *   link.c    reliable channel per peer, datagrams, broadcast
+ *   packet.c  messages <-> fragments, ports
+ *   xdr.c     data encoding for the applications (used by them directly)
+ * Applications talk to the thread through kernel queues: net_send posts a
+ * request and waits for its result; received messages wait in one message
+ * queue per port for net_recv.
+ */
+#ifndef NET_NET_H
+#define NET_NET_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "link.h"
+
+#define NET_BROADCAST  FRAME_BROADCAST
+#define NET_RELIABLE   LINK_RELIABLE     /* flags of net_send */
+#define NET_PORT_QUEUE 4u                /* messages waiting per port */
+#define NET_PRIO       24u               /* service thread: above the applications */
+
+/* Results (besides K_E* codes of the kernel, e.g. K_ETIMEDOUT, K_EINVAL). */
+#define NET_EUNREACH LINK_EUNREACH       /* reliable send: no ACK after all retries */
+
+struct net_stats {
+    uint32_t frames_sent, frames_received;
+    uint32_t crc_errors, malformed;
+    uint32_t retransmissions, collisions, deferrals, mac_drops;
+    uint32_t duplicates, delivered, unreachable, port_overflows;
+    uint32_t rx_overruns;
+};
+
+/* Starts the stack as station `station` (0..LINK_MAX_STATIONS-1); seed makes
+ * the backoffs of different stations differ. Call once after k_init. */
+int net_init(uint8_t station, uint32_t seed);
+uint8_t net_station(void);
+/* Sends len bytes to port of dst (a station or NET_BROADCAST). With
+ * NET_RELIABLE (unicast only) it returns when dst acknowledged the whole
+ * message (K_OK) or NET_EUNREACH when it never did (about 8 s of retries);
+ * without, the datagram (at most PACKET_DATA_MAX bytes) is queued and it
+ * returns at once. Never blocks longer than 60 s (then K_ETIMEDOUT). */
+int net_send(uint8_t dst, uint8_t port, const void *data, size_t len, unsigned flags);
+/* Waits up to timeout_ms for a message on port; copies at most size bytes,
+ * returns the message length (>= 0, truncated to size), *src = its sender
+ * (may be NULL), or K_ETIMEDOUT / K_EINVAL. One reader per port at a time. */
+int net_recv(uint8_t port, void *buf, size_t size, uint8_t *src, uint32_t timeout_ms);
+void net_stats_get(struct net_stats *out);
+/* Prints the statistics on the console (the shell's `net` command); 0. */
+int net_stats_print(void);
+
+#endif /* NET_NET_H */

@@ -1,0 +1,140 @@
+# The radio network stack (net/), its host peer (tools/netpeer) and the medium
+# (emu/radio_medium.py).
+#   make check-net-unit     cmocka tests of every layer, under ASan/UBSan
+#   make check-net-target   boards on the medium: 2 and 3 stations, the host
+#                           peer both ways, a faulty medium, a station that leaves,
+#                           the medium's faults and the board model's radio mode
+#   make net-soak BOARDS=N MESSAGES=M LOSS=P CORRUPT=Q SEED=S
+#   make check-net-soak     a short soak (2 boards + host peer, 10 % loss and corruption)
+#   make net-bench          goodput and latency figures (net/README.md)
+NET_BUILD      := $(BUILD)/net
+NET_UNIT_NAMES := frame xdr link mac
+NET_UNIT_TESTS := $(patsubst %,$(NET_BUILD)/tests/test_%,$(NET_UNIT_NAMES))
+NET_SANITIZE   ?= -fsanitize=address,undefined -fno-sanitize-recover=all
+NET_HOST_FLAGS := $(HOST_CFLAGS) -I$(ROOT) $(NET_SANITIZE)
+net_test_srcs_frame := net/frame.c net/crc16.c
+net_test_srcs_xdr   := net/xdr.c
+net_test_srcs_link  := net/link.c net/packet.c
+net_test_srcs_mac   := net/mac.c
+net_test_libs_xdr   := -I/usr/include/tirpc -ltirpc
+
+ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample
+CHECKS += net-unit net-target net-soak
+HOST_UNIT_CHECKS += net-unit
+
+.PHONY: check-net-unit check-net-target check-net-soak net-soak net-bench
+
+$(NET_BUILD)/tests/test_%: net/tests/test_%.c $(wildcard net/*.h) $(wildcard net/*.c)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $< $(net_test_srcs_$*) -lcmocka $(net_test_libs_$*)
+
+check-net-unit:
+	@$(SETUP) base net
+	@$(MAKE) --no-print-directory $(NET_UNIT_TESTS)
+	@p=0; f=0; rc=0; \
+	for t in $(NET_UNIT_TESTS); do \
+	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
+	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
+	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	done; \
+	$(call record,net-unit,$$p,$$f); [ $$rc -eq 0 ]
+
+NETNODE_ELF := $(call app_elf,netnode)
+
+# The XDR sample tool the Python comparison (test_xdr_python.py) runs.
+$(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/xdr.c net/xdr.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
+
+check-net-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample
+	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
+	    $(ROOT)/net/tests/target
+
+BOARDS   ?= 2
+MESSAGES ?= 5
+LOSS     ?= 0.1
+CORRUPT  ?= 0.1
+SEED     ?= 1
+net-soak:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode
+	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards $(BOARDS) \
+	    --messages $(MESSAGES) --loss $(LOSS) --corrupt $(CORRUPT) --seed $(SEED)
+
+# The short soak of make check: 2 boards and the host peer, 10 % frame loss,
+# 10 % corrupted frames, 3 messages per pair (18 messages).
+check-net-soak:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode
+	@out=$$($(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards 2 --messages 3 \
+	    --loss 0.1 --corrupt 0.1 --seed 1 --timeout 150); rc=$$?; echo "$$out"; \
+	if [ $$rc -eq 0 ]; then $(call record,net-soak,1,0); else $(call record,net-soak,0,1); fi; \
+	[ $$rc -eq 0 ]
+
+net-bench:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode
+	@$(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
+
+# ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
+#   make fuzz             frame parser and XDR decoder, FUZZ_RUNS (10^7) executions each
+#   make check-net-fuzz   the same, 2 x 10^5 executions each (suite net-fuzz)
+#   make check-net-cbmc   the memory-safety proofs (suite net-cbmc)
+NET_FUZZ_CC    ?= clang-14
+NET_FUZZ_FLAGS := -std=c99 -O1 -g -I$(ROOT) -fsanitize=fuzzer,address,undefined \
+                  -fno-sanitize-recover=all
+NET_FUZZERS    := frame xdr
+net_fuzz_srcs_frame := net/frame.c net/crc16.c
+net_fuzz_srcs_xdr   := net/xdr.c
+FUZZ_RUNS ?= 10000000
+NET_FUZZ_CHECK_RUNS ?= 200000
+CHECKS += net-fuzz net-cbmc
+
+.PHONY: fuzz check-net-fuzz check-net-cbmc
+$(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*.c)
+	@mkdir -p $(@D)
+	$(NET_FUZZ_CC) $(NET_FUZZ_FLAGS) -o $@ $< $(net_fuzz_srcs_$*)
+
+# $(1) = runs; prints libFuzzer's last lines; fails on any finding.
+define net_fuzz_run
+	@p=0; f=0; for t in $(NET_FUZZERS); do \
+	    mkdir -p $(NET_BUILD)/fuzz/corpus-$$t; \
+	    out=$$(cd $(NET_BUILD)/fuzz && ./fuzz_$$t -runs=$(1) -seed=1 corpus-$$t 2>&1); r=$$?; \
+	    echo "$$out" | tail -2 | sed "s/^/fuzz_$$t: /"; \
+	    if [ $$r -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); \
+	        echo "fuzz_$$t: FINDING (crash file in $(NET_BUILD)/fuzz)"; fi; \
+	done; $(2)
+endef
+
+fuzz: $(patsubst %,$(NET_BUILD)/fuzz/fuzz_%,$(NET_FUZZERS))
+	$(call net_fuzz_run,$(FUZZ_RUNS),[ $$f -eq 0 ])
+
+check-net-fuzz:
+	@$(SETUP) net
+	@$(MAKE) --no-print-directory $(patsubst %,$(NET_BUILD)/fuzz/fuzz_%,$(NET_FUZZERS))
+	$(call net_fuzz_run,$(NET_FUZZ_CHECK_RUNS),$(call record,net-fuzz,$$p,$$f); [ $$f -eq 0 ])
+
+NET_CBMC := $(BSCHED_TOOLS)/cbmc/bin/cbmc
+NET_CBMC_CHECKS := --bounds-check --pointer-check --signed-overflow-check --unsigned-overflow-check
+# The frame receiver: one arbitrary byte from any state within the invariant
+# (an induction over sequences of any length); the CRC's 16-bit arithmetic
+# is also checked for truncating conversions.
+NET_CBMC_FRAME := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 140 \
+                  --unwinding-assertions -I $(ROOT) net/proofs/frame_rx_harness.c net/frame.c net/crc16.c
+# The XDR decoder on every input of up to XDR_BOUND bytes.
+XDR_BOUND ?= 40
+NET_CBMC_XDR := --function harness $(NET_CBMC_CHECKS) --unwind $$(($(XDR_BOUND) + 6)) \
+                --unwinding-assertions -DXDR_BOUND=$(XDR_BOUND) -I $(ROOT) \
+                net/proofs/xdr_decode_harness.c net/xdr.c
+check-net-cbmc:
+	@$(SETUP) cbmc
+	@p=0; f=0; for run in FRAME XDR; do \
+	    if [ $$run = FRAME ]; then args="$(NET_CBMC_FRAME)"; else args="$(NET_CBMC_XDR)"; fi; \
+	    out=$$($(NET_CBMC) $$args 2>&1); \
+	    echo "$$out" | grep -E "^\*\*|VERIFICATION" | sed "s/^/net-cbmc $$run: /"; \
+	    if echo "$$out" | grep -q "VERIFICATION SUCCESSFUL"; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
+	done; $(call record,net-cbmc,$$p,$$f); [ $$f -eq 0 ]

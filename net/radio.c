@@ -1,0 +1,152 @@
+/* BiM-433 radio driver on DUART channel A; see radio.h. */
+#include "radio.h"
+#include "drivers/duart.h"
+#include "drivers/duart_console.h"
+#include "drivers/mc68681.h"
+
+#define RADIO_OP_RX 0x01u     /* OP0 */
+#define RADIO_OP_TX 0x02u     /* OP1 */
+#define RADIO_IP_CD 0x01u     /* IP0, low while a carrier is heard */
+#define RADIO_PAD   0x55u
+
+static struct k_event *radio_ev;
+static uint32_t radio_rx_bit, radio_tx_bit;
+static struct frame_rx radio_rx;
+static struct frame radio_ring[RADIO_RX_FRAMES];
+static volatile uint8_t radio_ring_head, radio_ring_count;
+static struct frame radio_scratch;
+static uint8_t radio_tx_buf[RADIO_TX_MAX];
+static volatile size_t radio_tx_len, radio_tx_pos;
+static volatile uint8_t radio_tx_on;
+static uint8_t radio_tx_heard_carrier;
+static struct radio_stats radio_stats;
+
+int radio_carrier(void)
+{
+    return (DUART_REG(DUART_IP) & RADIO_IP_CD) == 0u;
+}
+
+static void radio_rx_chars(void)
+{
+    uint8_t sr;
+    while (((sr = DUART_REG(DUART_SRA)) & DUART_SR_RXRDY) != 0u) {
+        uint8_t b = DUART_REG(DUART_RBA);
+        struct frame *slot = radio_ring_count < RADIO_RX_FRAMES
+            ? &radio_ring[(radio_ring_head + radio_ring_count) % RADIO_RX_FRAMES]
+            : &radio_scratch;
+        if ((sr & DUART_SR_OVERRUN) != 0u) {
+            radio_stats.rx_overruns++;
+            DUART_REG(DUART_CRA) = DUART_CR_RESET_ERROR;
+        }
+        if (frame_rx_byte(&radio_rx, b, slot)) {
+            if (slot == &radio_scratch) {
+                radio_stats.rx_ring_full++;
+            } else {
+                radio_ring_count++;
+                (void)k_event_set(radio_ev, radio_rx_bit);
+            }
+        }
+    }
+}
+
+static void radio_tx_chars(void)
+{
+    while ((DUART_REG(DUART_SRA) & DUART_SR_TXRDY) != 0u) {
+        if (radio_carrier())
+            radio_tx_heard_carrier = 1;
+        if (radio_tx_pos < radio_tx_len) {
+            DUART_REG(DUART_TBA) = radio_tx_buf[radio_tx_pos++];
+            continue;
+        }
+        /* The pad is in the shift register: the frame is out. Back to receive. */
+        duart_imr_update(0, DUART_INT_TXRDYA);
+        duart_op_negate(RADIO_OP_TX);
+        duart_op_assert(RADIO_OP_RX);
+        if (radio_tx_heard_carrier)
+            radio_stats.collisions++;
+        radio_tx_on = 0;
+        (void)k_event_set(radio_ev, radio_tx_bit);
+        break;
+    }
+}
+
+static void radio_isr(uint8_t pending, void *arg)
+{
+    (void)arg;
+    if ((pending & DUART_INT_RXRDYA) != 0u)
+        radio_rx_chars();
+    if ((pending & DUART_INT_TXRDYA) != 0u)
+        radio_tx_chars();
+}
+
+int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit)
+{
+    radio_ev = ev;
+    radio_rx_bit = rx_bit;
+    radio_tx_bit = tx_bit;
+    frame_rx_init(&radio_rx);
+    radio_ring_head = radio_ring_count = 0;
+    radio_tx_on = 0;
+    DUART_REG(DUART_CRA) = DUART_CR_RESET_RX | DUART_CR_RX_DISABLE | DUART_CR_TX_DISABLE;
+    DUART_REG(DUART_CRA) = DUART_CR_RESET_TX | DUART_CR_RX_DISABLE | DUART_CR_TX_DISABLE;
+    DUART_REG(DUART_CRA) = DUART_CR_RESET_ERROR;
+    DUART_REG(DUART_CRA) = DUART_CR_RESET_MR;
+    DUART_REG(DUART_MRA) = 0x13u;       /* 8 data bits, no parity, RxRDY interrupt */
+    DUART_REG(DUART_MRA) = 0x07u;       /* normal mode, 1 stop bit */
+    /* Set 2 code 0xC = 19200; set 1 has no 19200, its 0xB = 9600. */
+    DUART_REG(DUART_CSRA) = (console_acr() & 0x80u) != 0u ? 0xCCu : 0xBBu;
+    DUART_REG(DUART_CRA) = DUART_CR_RX_ENABLE | DUART_CR_TX_ENABLE;
+    duart_op_negate(RADIO_OP_TX);
+    duart_op_assert(RADIO_OP_RX);
+    if (duart_irq_attach(DUART_INT_RXRDYA | DUART_INT_TXRDYA, radio_isr, NULL) != 0)
+        return K_EINVAL;
+    duart_imr_update(DUART_INT_RXRDYA, 0);
+    return K_OK;
+}
+
+int radio_tx_busy(void)
+{
+    return radio_tx_on;
+}
+
+int radio_transmit(const uint8_t *bytes, size_t len)
+{
+    size_t i;
+    if (len == 0u || len + 1u > RADIO_TX_MAX)
+        return K_EINVAL;
+    if (radio_tx_on)
+        return K_EBUSY;
+    for (i = 0; i < len; i++)
+        radio_tx_buf[i] = bytes[i];
+    radio_tx_buf[len] = RADIO_PAD;
+    radio_tx_len = len + 1u;
+    radio_tx_pos = 0;
+    radio_tx_heard_carrier = 0;
+    radio_tx_on = 1;
+    /* Half duplex: the receiver is off while we transmit. */
+    duart_op_negate(RADIO_OP_RX);
+    duart_op_assert(RADIO_OP_TX);
+    duart_imr_update(DUART_INT_TXRDYA, 0);
+    return K_OK;
+}
+
+int radio_receive(struct frame *out)
+{
+    uint32_t irq;
+    if (radio_ring_count == 0u)
+        return 0;
+    *out = radio_ring[radio_ring_head];
+    irq = k_arch_irq_save();
+    radio_ring_head = (uint8_t)((radio_ring_head + 1u) % RADIO_RX_FRAMES);
+    radio_ring_count--;
+    k_arch_irq_restore(irq);
+    return 1;
+}
+
+void radio_stats_get(struct radio_stats *out, struct frame_rx_stats *framing)
+{
+    uint32_t irq = k_arch_irq_save();
+    *out = radio_stats;
+    *framing = radio_rx.stats;
+    k_arch_irq_restore(irq);
+}

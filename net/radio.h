@@ -1,0 +1,44 @@
+/*
+ * The BiM-433 radio on DUART channel A (facts 4.2): interrupt-driven, no
+ * polling and no busy transmit. OP0 = RX select, OP1 = TX select (through
+ * drivers/duart.h, which owns OPR), IP0 = carrier detect (low = carrier).
+ *
+ * Receive: the RxRDYA interrupt feeds every character to the frame state
+ * machine (frame.h); good frames go into a ring of RADIO_RX_FRAMES and the
+ * owner's event bit is set. Transmit: radio_transmit keys the module (RX
+ * select off, TX select on) and the TxRDYA interrupt feeds the encoded
+ * frame; a pad character follows the closing flag, and the TxRDY after the
+ * pad (the pad entered the shift register, so the flag has left) keys the
+ * module back to receive and sets the owner's done bit.
+ */
+#ifndef NET_RADIO_H
+#define NET_RADIO_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "kernel.h"
+#include "frame.h"
+
+#define RADIO_RX_FRAMES 6u
+#define RADIO_TX_MAX    (FRAME_ENCODED_MAX + 1u)   /* + the pad */
+
+struct radio_stats {
+    uint32_t rx_overruns;      /* characters lost in the DUART (FIFO overrun) */
+    uint32_t rx_ring_full;     /* good frames dropped: the ring was full */
+    uint32_t collisions;       /* carrier from another station during our transmission */
+};
+
+/* Sets up channel A at 19200 baud (9600 if the console chose baud-rate set 1,
+ * which has no 19200), RX select on; good frames set rx_bit in ev, finished
+ * transmissions set tx_bit. 0, or a negative K_E* code. */
+int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit);
+/* Starts sending len encoded bytes (copied); K_EBUSY while one is on air. */
+int radio_transmit(const uint8_t *bytes, size_t len);
+int radio_tx_busy(void);
+/* Carrier detect: another station is on air. */
+int radio_carrier(void);
+/* Takes the oldest received frame: 1, or 0 when there is none. */
+int radio_receive(struct frame *out);
+void radio_stats_get(struct radio_stats *out, struct frame_rx_stats *framing);
+
+#endif /* NET_RADIO_H */

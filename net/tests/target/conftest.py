@@ -1,0 +1,48 @@
+import os
+import sys
+import tempfile
+
+import pytest
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "tools"))
+
+from netpeer.netnode import Board, MediumProcess   # noqa: E402
+
+
+class Air:
+    """A medium plus the boards and peers a test starts; all stopped at the end."""
+
+    def __init__(self):
+        self.dir = tempfile.mkdtemp(prefix="net-target-")
+        self.sock = os.path.join(self.dir, "air.sock")
+        self.elf = os.environ.get("NETNODE_ELF") or os.path.join(
+            ROOT, "build", "firmware", "netnode", "netnode.elf")
+        self.medium = None
+        self.boards = []
+        self.closers = []
+
+    def start_medium(self, **faults):
+        self.medium = MediumProcess(self.sock, **faults)
+        return self.medium
+
+    def board(self, station, **config):
+        b = Board(self.elf, station, self.sock, self.dir, **config)
+        self.boards.append(b)
+        return b
+
+    def close(self):
+        for c in self.closers:
+            c()
+        for b in self.boards:
+            b.stop()
+        if self.medium:
+            self.medium.stop()
+
+
+@pytest.fixture
+def air():
+    a = Air()
+    yield a
+    a.close()
+

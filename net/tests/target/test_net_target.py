@@ -1,0 +1,125 @@
+"""The net/ stack on emulated boards through emu/radio_medium.py, and the host peer."""
+import re
+import struct
+import time
+
+from netpeer import MediumTransport, Peer, Unreachable
+
+
+def soak_results(text):
+    """{peer: (in order, duplicates, lost)} and (acknowledged, failed) from a SOAK console."""
+    per = {int(m[0]): tuple(map(int, m[1:])) for m in re.findall(
+        r"netnode: from (\d+): (\d+) in order, (\d+) duplicates, (\d+) lost", text)}
+    sent = re.search(r"sent (\d+) acknowledged, (\d+) failed", text)
+    return per, (int(sent[1]), int(sent[2])) if sent else None
+
+
+def run_soak(air, stations, messages, timeout=90, **faults):
+    air.start_medium(**faults)
+    boards = [air.board(s, mode="soak", peers=stations, messages=messages, seed=s + 1,
+                        linger_ms=20000) for s in stations]
+    for b in boards:
+        assert b.wait_for("netnode: done", timeout), b.text()
+    return boards
+
+
+def test_two_boards_deliver_everything(air):
+    boards = run_soak(air, [0, 1], 6)
+    for b, other in zip(boards, (1, 0)):
+        per, sent = soak_results(b.text())
+        assert sent == (6, 0), b.text()
+        assert per[other] == (6, 0, 0), b.text()
+        assert "crc errors 0" in b.text()
+
+
+def test_three_boards_share_the_channel(air):
+    boards = run_soak(air, [0, 1, 2], 4)
+    for b in boards:
+        per, sent = soak_results(b.text())
+        assert sent == (8, 0), b.text()
+        assert all(v == (4, 0, 0) for v in per.values()) and len(per) == 2, b.text()
+    stats = air.medium.stats()
+    assert int(stats["transmissions"]) >= 3 * 8 * 2      # data + ACK per message
+
+
+def test_faulty_medium_still_delivers_in_order(air):
+    boards = run_soak(air, [0, 1], 6, timeout=120, seed=5, loss=0.2, corrupt=0.2, noise=0.2)
+    for b, other in zip(boards, (1, 0)):
+        per, sent = soak_results(b.text())
+        assert sent == (6, 0), b.text()
+        assert per[other] == (6, 0, 0), b.text()
+    stats = air.medium.stats()
+    assert int(stats["lost"]) > 0 and int(stats["corrupted"]) > 0
+    text = "".join(b.text() for b in boards)
+    retx = sum(int(x) for x in re.findall(r"retransmissions (\d+)", text))
+    crc = sum(int(x) for x in re.findall(r"crc errors (\d+)", text))
+    assert retx > 0 and crc > 0
+
+
+def test_host_peer_and_board_both_ways(air):
+    air.start_medium()
+    board = air.board(1, mode="echo", linger_ms=60000)
+    assert board.wait_for("station 1 up", 10), board.text()
+    peer = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(peer.close)
+    msg = bytes(range(200))                              # two fragments
+    peer.send(1, 1, msg)                                 # host -> board, reliable
+    got = peer.recv(1, timeout=10)                       # board -> host (its echo), reliable
+    assert got == (1, msg)
+    assert peer.stats["unreachable"] == 0
+
+
+def test_host_peer_reports_unreachable_station(air):
+    air.start_medium()
+    peer = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(peer.close)
+    t0 = time.monotonic()
+    try:
+        peer.send(4, 1, b"anyone?")
+        raise AssertionError("no error for an absent station")
+    except Unreachable:
+        pass
+    assert time.monotonic() - t0 < 40
+
+
+def test_station_that_leaves_is_reported_and_others_go_on(air):
+    air.start_medium()
+    stations = [0, 1, 2]
+    boards = [air.board(s, mode="soak", peers=stations, messages=2, seed=s + 1,
+                        linger_ms=5000) for s in stations]
+    assert boards[2].wait_for("station 2 up", 10)
+    boards[2].stop()                                     # gone mid-transfer
+    for b, other in ((boards[0], 1), (boards[1], 0)):
+        assert b.wait_for("netnode: done", 120), b.text()
+        per, sent = soak_results(b.text())
+        assert per[other] == (2, 0, 0), b.text()         # the survivors still talk
+        assert sent[1] >= 1, b.text()                    # sends to station 2 failed ...
+        assert re.search(r"send \d+ to 2 failed \(-113\)", b.text()), b.text()  # ... as unreachable
+
+
+def test_boards_go_on_when_the_medium_dies(air):
+    air.start_medium()
+    boards = [air.board(s, mode="soak", peers=[0, 1], messages=3, seed=s + 1, linger_ms=2000)
+              for s in (0, 1)]
+    for b in boards:
+        assert b.wait_for("up, mode 1", 10), b.text()
+    air.medium.stop()                                    # the air is gone mid-transfer
+    for b in boards:
+        assert b.wait_for("netnode: done", 60), b.text() # no board hangs in the lock step
+        per, sent = soak_results(b.text())
+        assert sent[0] + sent[1] == 3                    # every send came back
+
+
+def test_host_peer_cli_send_and_reply(air):
+    import os
+    import subprocess
+    import sys
+    air.start_medium()
+    board = air.board(2, mode="echo", linger_ms=60000)
+    assert board.wait_for("station 2 up", 10), board.text()
+    tools = os.path.join(os.path.dirname(__file__), "..", "..", "..", "tools")
+    r = subprocess.run([sys.executable, "-m", "netpeer", "--socket", air.sock, "--station", "9",
+                        "send", "2", "1", "hello cube", "--wait-reply", "10"],
+                       cwd=tools, capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "2: hello cube"

@@ -1,0 +1,221 @@
+/* Host tests of the reliable channel (link.c) and packetizing (packet.c):
+ * stations on a simulated channel that loses frames deterministically. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+#include <cmocka.h>
+#include "net/link.h"
+#include "net/packet.h"
+
+#define STATIONS 3
+#define QMAX 64
+
+struct station {
+    struct link link;
+    struct frame q[QMAX];         /* frames on their way */
+    unsigned nq;
+    uint8_t got[8][NET_MSG_MAX];
+    size_t got_len[8];
+    uint8_t got_src[8];
+    unsigned ngot;
+    int done, result;
+};
+
+static struct station st[STATIONS];
+static unsigned loss_every;       /* drop every n-th frame on the air (0: none) */
+static unsigned air_count;
+static int down[STATIONS];        /* station switched off */
+
+static void tx(void *ctx, const struct frame *f)
+{
+    struct station *s = ctx;
+    assert_true(s->nq < QMAX);
+    s->q[s->nq++] = *f;
+}
+
+static void deliver(void *ctx, uint8_t src, uint8_t port, const uint8_t *msg, size_t len)
+{
+    struct station *s = ctx;
+    (void)port;
+    if (s->ngot < 8) {
+        memcpy(s->got[s->ngot], msg, len);
+        s->got_len[s->ngot] = len;
+        s->got_src[s->ngot] = src;
+    }
+    s->ngot++;
+}
+
+static void done(void *ctx, int result)
+{
+    struct station *s = ctx;
+    s->done = 1;
+    s->result = result;
+}
+
+static int setup(void **state)
+{
+    unsigned i;
+    (void)state;
+    memset(st, 0, sizeof st);
+    memset(down, 0, sizeof down);
+    loss_every = 0;
+    air_count = 0;
+    for (i = 0; i < STATIONS; i++) {
+        struct link_env env = { tx, deliver, done, NULL, &st[i] };
+        link_init(&st[i].link, (uint8_t)i, &env, i + 1u);
+    }
+    return 0;
+}
+
+/* Runs the air for up to ms milliseconds of simulated time, 1 ms per step. */
+static void run(uint32_t *now, uint32_t ms)
+{
+    uint32_t end = *now + ms;
+    while (*now < end) {
+        unsigned i, j, k;
+        for (i = 0; i < STATIONS; i++) {
+            for (k = 0; k < st[i].nq; k++) {
+                struct frame f = st[i].q[k];
+                air_count++;
+                link_frame_done(&st[i].link, f.type, *now);
+                if (down[i] || (loss_every && air_count % loss_every == 0u))
+                    continue;
+                for (j = 0; j < STATIONS; j++)
+                    if (j != i && !down[j])
+                        link_receive(&st[j].link, &f, *now);
+            }
+            st[i].nq = 0;
+            (void)link_poll(&st[i].link, *now);
+        }
+        (*now)++;
+    }
+}
+
+static void test_reliable_multi_fragment(void **state)
+{
+    uint8_t msg[300];
+    uint32_t now = 0;
+    unsigned i;
+    (void)state;
+    for (i = 0; i < sizeof msg; i++)
+        msg[i] = (uint8_t)(i * 3u);
+    assert_int_equal(link_send(&st[0].link, 1, 4, msg, sizeof msg, LINK_RELIABLE, now), LINK_OK);
+    assert_int_equal(link_send(&st[0].link, 2, 4, msg, 5, LINK_RELIABLE, now), LINK_EBUSY);
+    run(&now, 100);
+    assert_true(st[0].done);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 1);
+    assert_int_equal(st[1].got_len[0], sizeof msg);
+    assert_memory_equal(st[1].got[0], msg, sizeof msg);
+    assert_int_equal(st[2].ngot, 0);                   /* not for station 2 */
+    assert_int_equal(st[0].link.stats.retransmissions, 0);
+}
+
+static void test_loss_retransmits_without_duplicates(void **state)
+{
+    uint8_t msg[4] = { 1, 2, 3, 4 };
+    uint32_t now = 0;
+    unsigned m;
+    (void)state;
+    loss_every = 4;                                    /* a quarter of all frames lost */
+    for (m = 0; m < 6; m++) {
+        msg[0] = (uint8_t)m;
+        st[0].done = 0;
+        assert_int_equal(link_send(&st[0].link, 1, 0, msg, 4, LINK_RELIABLE, now), LINK_OK);
+        run(&now, 20000);
+        assert_true(st[0].done);
+        assert_int_equal(st[0].result, LINK_OK);
+    }
+    assert_int_equal(st[1].ngot, 6);
+    for (m = 0; m < 6; m++)
+        assert_int_equal(st[1].got[m][0], m);          /* in order, each once */
+    assert_true(st[0].link.stats.retransmissions > 0);
+    assert_true(st[1].link.stats.duplicates > 0);      /* lost ACKs caused repeats */
+}
+
+static void test_unreachable_then_recovers(void **state)
+{
+    uint8_t msg[2] = { 9, 9 };
+    uint32_t now = 0;
+    (void)state;
+    down[1] = 1;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 2, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 30000);
+    assert_true(st[0].done);
+    assert_int_equal(st[0].result, LINK_EUNREACH);
+    assert_int_equal(st[0].link.stats.retransmissions, LINK_MAX_RETRIES);
+    /* Station 2 is still served. */
+    st[0].done = 0;
+    assert_int_equal(link_send(&st[0].link, 2, 0, msg, 2, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 100);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[2].ngot, 1);
+    /* Station 1 back: the next message gets through. */
+    down[1] = 0;
+    st[0].done = 0;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 2, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 100);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 1);
+}
+
+static void test_broadcast_and_datagram(void **state)
+{
+    uint8_t big[PACKET_DATA_MAX + 1];
+    uint32_t now = 0;
+    (void)state;
+    memset(big, 1, sizeof big);
+    assert_int_equal(link_send(&st[0].link, FRAME_BROADCAST, 3, (const uint8_t *)"hi", 2, 0, now),
+                     LINK_OK);
+    assert_int_equal(link_send(&st[0].link, 2, 3, (const uint8_t *)"dg", 2, 0, now), LINK_OK);
+    assert_int_equal(link_send(&st[0].link, 2, 3, big, sizeof big, 0, now), LINK_EINVAL);
+    run(&now, 5);
+    assert_int_equal(st[1].ngot, 1);
+    assert_int_equal(st[2].ngot, 2);
+    assert_false(st[0].done);                           /* datagrams have no send_done */
+}
+
+static void test_bad_arguments(void **state)
+{
+    uint8_t msg[NET_MSG_MAX + 1] = { 0 };
+    (void)state;
+    assert_int_equal(link_send(&st[0].link, 1, NET_PORTS, msg, 1, LINK_RELIABLE, 0), LINK_EINVAL);
+    assert_int_equal(link_send(&st[0].link, 0, 0, msg, 1, LINK_RELIABLE, 0), LINK_EINVAL);
+    assert_int_equal(link_send(&st[0].link, 40, 0, msg, 1, LINK_RELIABLE, 0), LINK_EINVAL);
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, sizeof msg, LINK_RELIABLE, 0), LINK_EINVAL);
+}
+
+static void test_packet_reassembly_errors(void **state)
+{
+    struct packet_reasm r;
+    struct frame f;
+    uint8_t msg[300];
+    (void)state;
+    memset(msg, 7, sizeof msg);
+    packet_reasm_init(&r);
+    assert_int_equal(packet_count(0), 1);
+    assert_int_equal(packet_count(300), 3);
+    assert_true(packet_fragment(msg, 300, 1, 1, &f));
+    assert_int_equal(packet_reasm_add(&r, f.payload, f.len), PACKET_ERROR);   /* no start */
+    assert_true(packet_fragment(msg, 300, 1, 0, &f));
+    assert_int_equal(packet_reasm_add(&r, f.payload, f.len), PACKET_INCOMPLETE);
+    assert_true(packet_fragment(msg, 300, 1, 2, &f));
+    assert_int_equal(packet_reasm_add(&r, f.payload, f.len), PACKET_ERROR);   /* gap */
+    assert_false(packet_fragment(msg, 300, 1, 3, &f));
+    assert_int_equal(packet_reasm_add(&r, f.payload, 1), PACKET_ERROR);       /* runt */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_setup(test_reliable_multi_fragment, setup),
+        cmocka_unit_test_setup(test_loss_retransmits_without_duplicates, setup),
+        cmocka_unit_test_setup(test_unreachable_then_recovers, setup),
+        cmocka_unit_test_setup(test_broadcast_and_datagram, setup),
+        cmocka_unit_test_setup(test_bad_arguments, setup),
+        cmocka_unit_test_setup(test_packet_reassembly_errors, setup),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

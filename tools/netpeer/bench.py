@@ -1,0 +1,53 @@
+"""make net-bench: goodput of one sender and the latency of a 32-byte reliable
+message between two boards in lock step (virtual time), as in net/README.md."""
+import argparse
+import os
+import re
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from netpeer.netnode import Board, MediumProcess, ROOT           # noqa: E402
+
+BENCH = re.compile(r"netnode: bench (\d+) of (\d+) messages of (\d+) bytes to \d+ in (\d+) ms")
+
+
+def bench(elf, size, messages):
+    d = tempfile.mkdtemp(prefix="net-bench-")
+    sock = os.path.join(d, "air.sock")
+    medium = MediumProcess(sock)
+    rx = tx = None
+    try:
+        rx = Board(elf, 1, sock, d, mode="echo", linger_ms=120000)
+        if not rx.wait_for("station 1 up", 30):
+            raise RuntimeError("receiver did not start:\n" + rx.text())
+        tx = Board(elf, 0, sock, d, mode="bench", peers=(1,), messages=messages, size=size)
+        if not tx.wait_for("netnode: done", 300):
+            raise RuntimeError("bench did not finish:\n" + tx.text())
+        m = BENCH.search(tx.text())
+        return tuple(int(x) for x in m.groups())
+    finally:
+        for b in (tx, rx):
+            if b:
+                b.stop()
+        medium.stop()
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--elf", default=os.path.join(ROOT, "build", "firmware", "netnode",
+                                                  "netnode.elf"))
+    ap.add_argument("--baud", type=int, default=9600, help="the radio's rate (net/README.md)")
+    a = ap.parse_args(argv)
+    ok, n, size, ms = bench(a.elf, 504, 4)
+    bits = ok * size * 8 * 1000 / ms
+    print(f"net-bench: goodput {ok}/{n} x {size} bytes in {ms} ms virtual = {bits:.0f} bit/s "
+          f"= {100 * bits / a.baud:.1f} % of {a.baud} baud")
+    ok2, n2, size2, ms2 = bench(a.elf, 32, 40)
+    print(f"net-bench: latency of a {size2}-byte reliable message: {ms2 / n2:.1f} ms "
+          f"({ok2}/{n2} acknowledged in {ms2} ms virtual)")
+    return 0 if ok == n and ok2 == n2 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,129 @@
+"""Boards running apps/netnode on the radio medium: configuration patching and launch."""
+import os
+import struct
+import subprocess
+import sys
+import threading
+import time
+
+MAGIC = b"NETNODE\0"
+MODES = {"soak": 1, "echo": 2, "bench": 3}
+# struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
+CONFIG = struct.Struct(">BBHHHII")
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+# The firmware's usual deterministic setting (2^8 ns per instruction, idle
+# time skipped), with the boards in lock step through the medium every
+# SYNC_NS of virtual time (emu/README.md, "Radio medium").
+ICOUNT = "shift=8,sleep=off"
+SYNC_NS = 500_000
+
+
+def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
+                 seed=1, linger_ms=3000):
+    data = bytearray(open(elf_in, "rb").read())
+    at = data.find(MAGIC)
+    if at < 0 or data.find(MAGIC, at + 1) >= 0:
+        raise ValueError(f"{elf_in}: no unique netnode configuration block")
+    mask = 0
+    for p in peers:
+        mask |= 1 << p
+    cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms)
+    data[at + len(MAGIC):at + len(MAGIC) + CONFIG.size] = cfg
+    with open(elf_out, "wb") as f:
+        f.write(data)
+
+
+def qemu_binary():
+    return os.environ.get("BSCHED_QEMU") or os.path.join(ROOT, "build", "emu", "qemu-system-m68k")
+
+
+class Board:
+    """One emulated RoboCube whose radio joins the medium at `medium_sock`."""
+
+    def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, sync_ns=SYNC_NS,
+                 **config):
+        self.station = station
+        self.elf = os.path.join(workdir, f"netnode-{station}.elf")
+        patch_config(elf, self.elf, station, **config)
+        self.console = bytearray()
+        self.lock = threading.Lock()
+        cmd = [qemu_binary(), "-M", "robocube", "-icount", icount, "-kernel", self.elf,
+               "-display", "none", "-monitor", "none", "-serial", "stdio",
+               "-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
+               "-serial", "chardev:air",
+               "-global", "mc68681-duart.radio-medium=on",
+               "-global", f"mc68681-duart.radio-station={station}",
+               "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
+        self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                     stderr=subprocess.STDOUT)
+        self.reader = threading.Thread(target=self._read, daemon=True)
+        self.reader.start()
+
+    def _read(self):
+        for chunk in iter(lambda: self.proc.stdout.read1(4096), b""):
+            with self.lock:
+                self.console += chunk
+
+    def text(self):
+        with self.lock:
+            return self.console.decode(errors="replace").replace("\r", "")
+
+    def wait_for(self, marker, timeout):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if marker in self.text():
+                return True
+            if self.proc.poll() is not None:
+                return marker in self.text()
+            time.sleep(0.05)
+        return False
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+
+
+class MediumProcess:
+    def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=()):
+        cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
+               "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
+               "--noise", str(noise)]
+        if os.environ.get("NET_MEDIUM_TRACE"):
+            cmd.append("--trace")
+        for a, b in out_of_range:
+            cmd += ["--out-of-range", f"{a}:{b}"]
+        self.sock = sock
+        self.proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                     text=True)
+        line = self.proc.stdout.readline()
+        if "listening" not in line:
+            raise RuntimeError(f"radio medium did not start: {line!r}")
+        self.output = []
+        threading.Thread(target=lambda: self.output.extend(self.proc.stdout), daemon=True).start()
+
+    def control(self, command):
+        import socket
+        s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        s.settimeout(5)
+        s.connect(self.sock + ".ctl")
+        s.sendall((command + "\n").encode())
+        reply = s.makefile().readline().strip()
+        s.close()
+        return reply
+
+    def stats(self):
+        return dict(kv.split("=") for kv in self.control("stats").split())
+
+    def stop(self):
+        if self.proc.poll() is None:
+            self.proc.terminate()
+            try:
+                self.proc.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()

@@ -1,0 +1,150 @@
+"""Frames and packets of the radio link, as net/frame.h and net/packet.h define them."""
+import binascii
+from dataclasses import dataclass
+
+PREAMBLE = b"\x55\x55\x55"
+FLAG, ESC, ESC_XOR = 0x7E, 0x7D, 0x20
+HEADER_LEN, CRC_LEN = 4, 2
+PAYLOAD_MAX = 128
+BODY_MAX = HEADER_LEN + PAYLOAD_MAX + CRC_LEN
+BROADCAST = 0xFF
+DATA, ACK, DGRAM = 1, 2, 3
+PORTS = 8
+MSG_MAX = 512
+PACKET_HDR_LEN = 2
+PACKET_DATA_MAX = PAYLOAD_MAX - PACKET_HDR_LEN
+PACKET_LAST = 0x80
+
+
+def crc16(data, crc=0xFFFF):
+    """CRC-16/CCITT-FALSE (net/crc16.h)."""
+    return binascii.crc_hqx(bytes(data), crc)
+
+
+@dataclass
+class Frame:
+    src: int
+    dst: int
+    type: int
+    seq: int
+    payload: bytes = b""
+
+
+def _stuff(data):
+    out = bytearray()
+    for b in data:
+        if b in (FLAG, ESC):
+            out += bytes((ESC, b ^ ESC_XOR))
+        else:
+            out.append(b)
+    return bytes(out)
+
+
+def encode_frame(f):
+    if len(f.payload) > PAYLOAD_MAX:
+        raise ValueError(f"payload of {len(f.payload)} bytes > {PAYLOAD_MAX}")
+    body = bytes((f.src, f.dst, f.type, f.seq)) + bytes(f.payload)
+    c = crc16(body)
+    return PREAMBLE + bytes((FLAG,)) + _stuff(body + bytes((c >> 8, c & 0xFF))) + bytes((FLAG,))
+
+
+class FrameDecoder:
+    """The receive state machine of net/frame.c, one byte at a time."""
+    HUNT, BODY, ESCAPED = 0, 1, 2
+
+    def __init__(self):
+        self.state = self.HUNT
+        self.body = bytearray()
+        self.frames = self.crc_errors = self.malformed = 0
+
+    def feed(self, data):
+        """Returns the good frames completed by data."""
+        out = []
+        for b in data:
+            f = self.byte(b)
+            if f is not None:
+                out.append(f)
+        return out
+
+    def byte(self, b):
+        if b == FLAG:
+            if self.state == self.ESCAPED:
+                self.malformed += 1
+                self.body.clear()
+                self.state = self.BODY
+                return None
+            if self.state == self.HUNT:
+                self.state = self.BODY
+                self.body.clear()
+                return None
+            body = bytes(self.body)
+            self.body.clear()
+            if len(body) < HEADER_LEN + CRC_LEN:
+                return None
+            if crc16(body) != 0:
+                self.crc_errors += 1
+                return None
+            self.frames += 1
+            return Frame(body[0], body[1], body[2], body[3], body[4:-2])
+        if self.state == self.BODY:
+            if b == ESC:
+                self.state = self.ESCAPED
+                return None
+        elif self.state == self.ESCAPED:
+            b ^= ESC_XOR
+            if b not in (FLAG, ESC):
+                self.malformed += 1
+                self.state = self.HUNT
+                self.body.clear()
+                return None
+            self.state = self.BODY
+        else:
+            return None
+        if len(self.body) >= BODY_MAX:
+            self.malformed += 1
+            self.state = self.HUNT
+            self.body.clear()
+            return None
+        self.body.append(b)
+        return None
+
+
+def fragments(msg, port):
+    """Frame payloads (packet header + data) of a message (net/packet.c)."""
+    if len(msg) > MSG_MAX or not 0 <= port < PORTS:
+        raise ValueError(f"message of {len(msg)} bytes (max {MSG_MAX}) or port {port}")
+    count = max(1, -(-len(msg) // PACKET_DATA_MAX))
+    out = []
+    for i in range(count):
+        chunk = msg[i * PACKET_DATA_MAX:(i + 1) * PACKET_DATA_MAX]
+        out.append(bytes((port, i | (PACKET_LAST if i + 1 == count else 0))) + bytes(chunk))
+    return out
+
+
+class Reassembly:
+    """In-order reassembly of one peer's fragments (net/packet.c)."""
+
+    def __init__(self):
+        self.active = False
+        self.port = 0
+        self.next = 0
+        self.data = bytearray()
+
+    def add(self, payload):
+        """Returns (port, message) when complete, None otherwise; ValueError when out of place."""
+        if len(payload) < PACKET_HDR_LEN or payload[0] >= PORTS:
+            self.active = False
+            raise ValueError("bad packet header")
+        port, index = payload[0], payload[1] & 0x7F
+        if index == 0:
+            self.active, self.port, self.next, self.data = True, port, 0, bytearray()
+        if (not self.active or index != self.next or port != self.port
+                or len(self.data) + len(payload) - 2 > MSG_MAX):
+            self.active = False
+            raise ValueError("fragment out of place")
+        self.data += payload[2:]
+        self.next += 1
+        if payload[1] & PACKET_LAST:
+            self.active = False
+            return port, bytes(self.data)
+        return None
