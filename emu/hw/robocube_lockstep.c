@@ -29,6 +29,14 @@
  * and the vCPU cannot move. On resume (a VM state change handler, which runs
  * before the vCPUs resume) the guard moves to the next boundary.
  * Without -icount the stop is still made, but not at an exact instruction.
+ *
+ * Frame channel (optional, -global robocube-lockstep.chardev=ID): instead
+ * of a QMP round trip per property and per `cont`, each stop sends one
+ * line "S STEPS BOUNDARY_NS V1 V2 ...\n" (the sample-props values) on the
+ * chardev, and the host answers "I V1 V2 ...\n" (the input-props values):
+ * the device writes the inputs and resumes the VM itself. A refused line is
+ * answered "E message\n" and the VM stays paused. This is the fast path of
+ * emu/world/cosim.py; QMP still works alongside.
  */
 #include "qemu/osdep.h"
 #include "qemu/module.h"
@@ -37,6 +45,9 @@
 #include "qapi/visitor.h"
 #include "qapi/qapi-builtin-visit.h"
 #include "hw/qdev-core.h"
+#include "hw/qdev-properties.h"
+#include "hw/qdev-properties-system.h"
+#include "chardev/char-fe.h"
 #include "sysemu/runstate.h"
 #include "robocube_board.h"
 
@@ -56,6 +67,10 @@ struct RoboCubeLockstep {
     char *sample_spec, *input_spec;
     GPtrArray *sample_obj, *sample_prop;
     GPtrArray *input_obj, *input_prop;
+    /* Frame channel. */
+    CharBackend chr;
+    char line[4096];
+    size_t line_len;
 };
 
 static void lockstep_guard_cb(void *opaque)
@@ -97,6 +112,8 @@ static void lockstep_boundary_cb(void *opaque)
     qemu_system_vmstop_request(RUN_STATE_PAUSED);
 }
 
+static bool lockstep_read_samples(RoboCubeLockstep *ls, GString *out, Error **errp);
+
 static void lockstep_vm_state(void *opaque, bool running, RunState state)
 {
     RoboCubeLockstep *ls = opaque;
@@ -104,6 +121,17 @@ static void lockstep_vm_state(void *opaque, bool running, RunState state)
     if (running && ls->stop_pending) {
         ls->stop_pending = false;
         lockstep_arm(ls);
+    } else if (!running && ls->stop_pending && qemu_chr_fe_backend_connected(&ls->chr)) {
+        /* Stopped at a boundary: send the frame (the vCPUs are paused now). */
+        g_autoptr(GString) frame = g_string_new(NULL);
+        Error *err = NULL;
+        g_string_append_printf(frame, "S %" PRIu64 " %" PRIu64, ls->steps, ls->boundary);
+        if (!lockstep_read_samples(ls, frame, &err)) {
+            g_string_printf(frame, "E %s", error_get_pretty(err));
+            error_free(err);
+        }
+        g_string_append_c(frame, '\n');
+        qemu_chr_fe_write_all(&ls->chr, (const uint8_t *)frame->str, frame->len);
     }
 }
 
@@ -226,11 +254,11 @@ static void lockstep_set_input_spec(Object *obj, const char *value, Error **errp
     }
 }
 
-static void lockstep_get_sample(Object *obj, Visitor *v, const char *name,
-                                void *opaque, Error **errp)
+/* Reads every sample property; appends " V" per value to out if given,
+ * and to *list if given. */
+static bool lockstep_sample_values(RoboCubeLockstep *ls, GString *out, intList ***tail,
+                                   Error **errp)
 {
-    RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(obj);
-    intList *head = NULL, **tail = &head;
     unsigned n = ls->sample_obj ? ls->sample_obj->len : 0;
 
     for (unsigned i = 0; i < n; i++) {
@@ -239,13 +267,53 @@ static void lockstep_get_sample(Object *obj, Visitor *v, const char *name,
                                                 g_ptr_array_index(ls->sample_prop, i), &err);
         if (err) {
             error_propagate(errp, err);
-            qapi_free_intList(head);
-            return;
+            return false;
         }
-        QAPI_LIST_APPEND(tail, value);
+        if (out) {
+            g_string_append_printf(out, " %" PRId64, value);
+        }
+        if (tail) {
+            QAPI_LIST_APPEND(*tail, value);
+        }
     }
-    visit_type_intList(v, name, &head, errp);
+    return true;
+}
+
+static bool lockstep_read_samples(RoboCubeLockstep *ls, GString *out, Error **errp)
+{
+    return lockstep_sample_values(ls, out, NULL, errp);
+}
+
+static void lockstep_get_sample(Object *obj, Visitor *v, const char *name,
+                                void *opaque, Error **errp)
+{
+    RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(obj);
+    intList *head = NULL, **tail = &head;
+
+    if (lockstep_sample_values(ls, NULL, &tail, errp)) {
+        visit_type_intList(v, name, &head, errp);
+    }
     qapi_free_intList(head);
+}
+
+/* Writes n values to the input properties; false (and errp) on the first
+ * refused value or a count mismatch. */
+static bool lockstep_write_inputs(RoboCubeLockstep *ls, const int64_t *values, unsigned count,
+                                  Error **errp)
+{
+    unsigned n = ls->input_obj ? ls->input_obj->len : 0;
+
+    if (count != n) {
+        error_setg(errp, "inputs: %u values for %u input-props", count, n);
+        return false;
+    }
+    for (unsigned i = 0; i < n; i++) {
+        if (!object_property_set_int(g_ptr_array_index(ls->input_obj, i),
+                                     g_ptr_array_index(ls->input_prop, i), values[i], errp)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 static void lockstep_set_inputs(Object *obj, Visitor *v, const char *name,
@@ -253,28 +321,104 @@ static void lockstep_set_inputs(Object *obj, Visitor *v, const char *name,
 {
     RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(obj);
     intList *list = NULL;
-    unsigned n = ls->input_obj ? ls->input_obj->len : 0, i = 0;
+    g_autoptr(GArray) values = g_array_new(false, false, sizeof(int64_t));
 
     if (!visit_type_intList(v, name, &list, errp)) {
         return;
     }
     for (intList *e = list; e; e = e->next) {
-        i++;
-    }
-    if (i != n) {
-        error_setg(errp, "inputs: %u values for %u input-props", i, n);
-        qapi_free_intList(list);
-        return;
-    }
-    i = 0;
-    for (intList *e = list; e; e = e->next, i++) {
-        if (!object_property_set_int(g_ptr_array_index(ls->input_obj, i),
-                                     g_ptr_array_index(ls->input_prop, i), e->value, errp)) {
-            break;
-        }
+        g_array_append_val(values, e->value);
     }
     qapi_free_intList(list);
+    lockstep_write_inputs(ls, (const int64_t *)values->data, values->len, errp);
 }
+
+/* ---- frame channel ---- */
+static void lockstep_reply_error(RoboCubeLockstep *ls, Error *err)
+{
+    g_autofree char *msg = g_strdup_printf("E %s\n", error_get_pretty(err));
+    qemu_chr_fe_write_all(&ls->chr, (const uint8_t *)msg, strlen(msg));
+    error_free(err);
+}
+
+/* One complete line from the host: "I V1 V2 ...". */
+static void lockstep_handle_line(RoboCubeLockstep *ls, char *line)
+{
+    g_autoptr(GArray) values = g_array_new(false, false, sizeof(int64_t));
+    Error *err = NULL;
+    char *p = line + 1, *end;
+
+    if (line[0] != 'I') {
+        error_setg(&err, "lockstep frame: expected 'I values...', got '%.40s'", line);
+        lockstep_reply_error(ls, err);
+        return;
+    }
+    for (;;) {
+        int64_t v;
+        while (*p == ' ') {
+            p++;
+        }
+        if (!*p) {
+            break;
+        }
+        errno = 0;
+        v = strtoll(p, &end, 10);
+        if (end == p || errno || (*end && *end != ' ')) {
+            error_setg(&err, "lockstep frame: '%.20s' is not an integer", p);
+            lockstep_reply_error(ls, err);
+            return;
+        }
+        g_array_append_val(values, v);
+        p = end;
+    }
+    if (!lockstep_write_inputs(ls, (const int64_t *)values->data, values->len, &err)) {
+        lockstep_reply_error(ls, err);
+        return;
+    }
+    if (runstate_check(RUN_STATE_PAUSED)) {
+        vm_start();
+    }
+}
+
+static int lockstep_can_read(void *opaque)
+{
+    RoboCubeLockstep *ls = opaque;
+    return (int)(sizeof(ls->line) - ls->line_len);
+}
+
+static void lockstep_read(void *opaque, const uint8_t *buf, int size)
+{
+    RoboCubeLockstep *ls = opaque;
+
+    for (int i = 0; i < size; i++) {
+        if (buf[i] == '\n') {
+            ls->line[ls->line_len] = 0;
+            lockstep_handle_line(ls, ls->line);
+            ls->line_len = 0;
+        } else if (ls->line_len < sizeof(ls->line) - 1) {
+            ls->line[ls->line_len++] = (char)buf[i];
+        } else {
+            Error *err = NULL;
+            error_setg(&err, "lockstep frame: line longer than %zu bytes", sizeof(ls->line) - 1);
+            lockstep_reply_error(ls, err);
+            ls->line_len = 0;
+        }
+    }
+}
+
+static void lockstep_realize(DeviceState *dev, Error **errp)
+{
+    RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(dev);
+    if (qemu_chr_fe_backend_connected(&ls->chr)) {
+        qemu_chr_fe_set_handlers(&ls->chr, lockstep_can_read, lockstep_read, NULL, NULL, ls,
+                                 NULL, true);
+    }
+}
+
+static Property lockstep_properties[] = {
+    DEFINE_PROP_CHR("chardev", RoboCubeLockstep, chr),
+    DEFINE_PROP_END_OF_LIST(),
+};
 
 static void lockstep_instance_init(Object *obj)
 {
@@ -293,6 +437,8 @@ static void lockstep_class_init(ObjectClass *oc, void *data)
 
     dc->desc = "RoboCube lockstep: pauses the VM at every step-ns of virtual time";
     dc->user_creatable = false;
+    dc->realize = lockstep_realize;
+    device_class_set_props(dc, lockstep_properties);
     object_class_property_add(oc, "step-ns", "uint64", lockstep_get_step, lockstep_set_step, NULL, NULL);
     object_class_property_set_description(oc, "step-ns",
         "virtual ns between stops (0 = off); boundaries at k * step-ns");

@@ -1,0 +1,90 @@
+"""Host fast mode: the robot program runs on the host (the same
+eco_program.c and bsched.c, as a shared library through ctypes) against the
+same world, with a host copy of the board's motor model instead of the
+emulator. For developing behaviours: minutes of virtual time in seconds."""
+
+import ctypes
+import math
+
+from cosim import sensor_inputs
+
+CYCLE_S = 1.0 / 64          # the firmware's minor cycle: 2 ticks of 128 Hz
+MOTOR_STEP_S = 0.001        # the board's motor model step (emu/IO.md 1.4)
+
+
+class HostProgram:
+    def __init__(self, lib_path, seed):
+        self.lib = ctypes.CDLL(lib_path)
+        self.lib.eco_host_cycle.restype = ctypes.c_uint32
+        self.lib.eco_host_name.restype = ctypes.c_char_p
+        rc = self.lib.eco_host_init(ctypes.c_uint32(seed & 0xFFFFFFFF))
+        if rc != 0:
+            raise RuntimeError(f"eco_host_init: bsched_init returned {rc}")
+        self.procs = self.lib.eco_host_procs()
+        self.names = [self.lib.eco_host_name(i).decode() for i in range(self.procs)]
+        self._in = (ctypes.c_int32 * 10)()
+        self._out = (ctypes.c_int32 * (3 + 2 * self.procs))()
+
+    def cycle(self, inputs):
+        for i, v in enumerate(inputs):
+            self._in[i] = v
+        mask = self.lib.eco_host_cycle(self._in, self._out)
+        out = list(self._out)
+        return mask, out
+
+
+class MotorModel:
+    """The board's DC motor model (emu/hw/robocube_motors.c), in Python:
+    tau d(speed)/dt = duty * max_speed - speed, stepped every 1 ms, whole
+    counts emitted (truncated toward zero)."""
+
+    def __init__(self, max_speed=2000.0, tau_s=0.05):
+        self.max_speed, self.tau = max_speed, tau_s
+        self.speed = 0.0
+        self.frac = 0.0
+        self.encoder = 0
+
+    def step(self, signed_duty, dt):
+        target = signed_duty * self.max_speed
+        self.speed += (target - self.speed) * (1.0 - math.exp(-dt / self.tau))
+        self.frac += self.speed * dt
+        whole = int(self.frac)
+        self.frac -= whole
+        self.encoder += whole
+
+
+def run_host(world, rec, lib_path, seed, seconds, step_s=0.01, on_step=None):
+    prog = HostProgram(lib_path, seed)
+    wiring = world.arena["wiring"]
+    motors = [MotorModel(), MotorModel()]
+    duty = [0.0, 0.0]
+    next_cycle = 0.0
+    t = 0.0
+    status = {}
+    steps = int(round(seconds / step_s))
+    sub = int(round(step_s / MOTOR_STEP_S))
+    for k in range(steps):
+        # Cycles due in this step, at their own times (sensors as of the step start).
+        while next_cycle < t + step_s - 1e-12:
+            mask, out = prog.cycle(sensor_inputs(world.sensors(), wiring))
+            duty = [out[0] / 1000.0, out[1] / 1000.0]
+            status = {"ran": [prog.names[i] for i in range(prog.procs) if mask >> i & 1],
+                      "motor": (out[0], out[1]), "hunger": out[2],
+                      "contrib": {prog.names[i]: (out[3 + 2 * i], out[4 + 2 * i])
+                                  for i in range(prog.procs)}}
+            next_cycle += CYCLE_S
+        if not world.alive:
+            duty = [0.0, 0.0]
+        before = [m.encoder for m in motors]
+        for _ in range(sub):
+            for m, d in zip(motors, duty):
+                m.step(d, MOTOR_STEP_S)
+        t = (k + 1) * step_s
+        world.step(step_s, motors[0].encoder - before[0], motors[1].encoder - before[1],
+                   abs(duty[0]), abs(duty[1]))
+        rec.last_status = status
+        rec.step(int(round(t * 1e9)))
+        if on_step:
+            on_step(world, rec)
+        if not world.alive:
+            break
