@@ -3,9 +3,10 @@ world advance together in fixed steps of virtual time.
 
 Every step: QEMU stops at the boundary (/machine/lockstep, see
 emu/README.md "Lockstep") and sends one line on the lockstep chardev with the
-motors' duty, direction and encoder counts; the host integrates the world
-over the step and answers with one line of sensor codes and binary inputs,
-which the device writes before it resumes the machine by itself. (QMP only
+wheel motors' duty and direction; the host runs the motor model (motors.py)
+and the world over the step and answers with one line of sensor codes,
+binary inputs and the wheels' encoder counts, which the device writes before
+it resumes the machine by itself. (QMP only
 sets the lists up: a QMP command costs about as much as a whole step.) Virtual time follows only the instruction count (-icount
 shift=8,sleep=off), so the same firmware, arena and seed give the same run
 bit for bit, whatever the load on the host.
@@ -18,6 +19,7 @@ import socket
 import subprocess
 import tempfile
 
+from motors import MotorModel
 from qmp_link import QMPLink, qom_get, qom_set
 
 IO = "/machine/robocube-io"
@@ -143,19 +145,23 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=10_000_000, on_s
     ml, mr = wiring["motor_left"], wiring["motor_right"]
     sample = [f"{LOCKSTEP}:boundary-ns"]
     for m in (ml, mr):
-        sample += [f"{IO}/motor{m}:duty", f"{IO}/motor{m}:direction", f"{IO}/motor{m}:encoder"]
+        sample += [f"{IO}/motor{m}:duty", f"{IO}/motor{m}:direction"]
     inputs = [f"{IO}:ain{wiring['ain_' + k]}" for k in
               ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
-               "comp_right")] + ["/machine/duart:input-port"]
+               "comp_right")] + ["/machine/duart:input-port", f"{IO}/motor{ml}:encoder",
+                                 f"{IO}/motor{mr}:encoder"]
+    wheels = [MotorModel(), MotorModel()]
     emu = Emulator(qemu, elf, step_ns)
     try:
         q = emu.qmp
-        q.batch([qom_set(LOCKSTEP, "sample-props", " ".join(sample)),
+        q.batch([qom_set(f"{IO}/motor{ml}", "model-enabled", 0),
+                 qom_set(f"{IO}/motor{mr}", "model-enabled", 0),
+                 qom_set(LOCKSTEP, "sample-props", " ".join(sample)),
                  qom_set(LOCKSTEP, "input-props", " ".join(inputs))])
         codes = world.sensors()
         q.execute("qom-set", {"path": LOCKSTEP, "property": "inputs",
-                              "value": [codes[k] for k in ANALOG] + [input_port(codes, wiring)]})
-        enc_prev = (0, 0)
+                              "value": [codes[k] for k in ANALOG] + [input_port(codes, wiring),
+                                                                     0, 0]})
         steps = int(seconds * 1e9 // step_ns)
         q.execute("cont")
         for k in range(steps):
@@ -164,12 +170,16 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=10_000_000, on_s
             if f[0] != k + 1 or t_ns != (k + 1) * step_ns:
                 raise RuntimeError(f"lockstep: stop {f[0]} at {t_ns} ns, expected stop {k + 1} "
                                    f"at {(k + 1) * step_ns} ns")
-            duty_l, enc_l = s[1] / 10000.0 * abs(s[2]), s[3]
-            duty_r, enc_r = s[4] / 10000.0 * abs(s[5]), s[6]
-            world.step(step_ns / 1e9, enc_l - enc_prev[0], enc_r - enc_prev[1], duty_l, duty_r)
-            enc_prev = (enc_l, enc_r)
+            # Duty and direction in effect at the boundary drive the wheels for the step.
+            duty_l, duty_r = s[1] / 10000.0, s[3] / 10000.0
+            if not world.alive:
+                duty_l = duty_r = 0.0
+            turned = [w.advance(d * direction, step_ns / 1e9)
+                      for w, d, direction in ((wheels[0], duty_l, s[2]), (wheels[1], duty_r, s[4]))]
+            world.step(step_ns / 1e9, turned[0], turned[1], duty_l * abs(s[2]), duty_r * abs(s[4]))
             codes = world.sensors()
-            emu.send_inputs([codes[c] for c in ANALOG] + [input_port(codes, wiring)])
+            emu.send_inputs([codes[c] for c in ANALOG] +
+                            [input_port(codes, wiring), wheels[0].encoder, wheels[1].encoder])
             for line in emu.read_console():
                 st = parse_status(line, names)
                 if st:

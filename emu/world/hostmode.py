@@ -4,12 +4,11 @@ same world, with a host copy of the board's motor model instead of the
 emulator. For developing behaviours: minutes of virtual time in seconds."""
 
 import ctypes
-import math
 
 from cosim import sensor_inputs
+from motors import MotorModel
 
 CYCLE_S = 1.0 / 64          # the firmware's minor cycle: 2 ticks of 128 Hz
-MOTOR_STEP_S = 0.001        # the board's motor model step (emu/IO.md 1.4)
 
 
 class HostProgram:
@@ -33,26 +32,6 @@ class HostProgram:
         return mask, out
 
 
-class MotorModel:
-    """The board's DC motor model (emu/hw/robocube_motors.c), in Python:
-    tau d(speed)/dt = duty * max_speed - speed, stepped every 1 ms, whole
-    counts emitted (truncated toward zero)."""
-
-    def __init__(self, max_speed=2000.0, tau_s=0.05):
-        self.max_speed, self.tau = max_speed, tau_s
-        self.speed = 0.0
-        self.frac = 0.0
-        self.encoder = 0
-
-    def step(self, signed_duty, dt):
-        target = signed_duty * self.max_speed
-        self.speed += (target - self.speed) * (1.0 - math.exp(-dt / self.tau))
-        self.frac += self.speed * dt
-        whole = int(self.frac)
-        self.frac -= whole
-        self.encoder += whole
-
-
 def run_host(world, rec, lib_path, seed, seconds, step_s=0.01, on_step=None):
     prog = HostProgram(lib_path, seed)
     wiring = world.arena["wiring"]
@@ -62,7 +41,6 @@ def run_host(world, rec, lib_path, seed, seconds, step_s=0.01, on_step=None):
     t = 0.0
     status = {}
     steps = int(round(seconds / step_s))
-    sub = int(round(step_s / MOTOR_STEP_S))
     for k in range(steps):
         # Cycles due in this step, at their own times (sensors as of the step start).
         while next_cycle < t + step_s - 1e-12:
@@ -75,13 +53,9 @@ def run_host(world, rec, lib_path, seed, seconds, step_s=0.01, on_step=None):
             next_cycle += CYCLE_S
         if not world.alive:
             duty = [0.0, 0.0]
-        before = [m.encoder for m in motors]
-        for _ in range(sub):
-            for m, d in zip(motors, duty):
-                m.step(d, MOTOR_STEP_S)
+        turned = [m.advance(d, step_s) for m, d in zip(motors, duty)]
         t = (k + 1) * step_s
-        world.step(step_s, motors[0].encoder - before[0], motors[1].encoder - before[1],
-                   abs(duty[0]), abs(duty[1]))
+        world.step(step_s, turned[0], turned[1], abs(duty[0]), abs(duty[1]))
         rec.last_status = status
         rec.step(int(round(t * 1e9)))
         if on_step:

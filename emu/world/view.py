@@ -105,6 +105,7 @@ class LiveView:
 
     def _render(self, world, rec):
         from rich.columns import Columns
+        from rich.console import Group
         from rich.panel import Panel
         from rich.table import Table
         from rich.text import Text
@@ -142,4 +143,4 @@ class LiveView:
         for name, (sp, tu) in st.get("contrib", {}).items():
             style = "bold" if name in st.get("ran", []) else "dim"
             contrib.add_row(Text(name, style=style), f"{sp:+d}", f"{tu:+d}")
-        return Columns([arena, Panel(info, title="robot"), contrib])
+        return Columns([arena, Group(Panel(info, title="robot"), contrib)])
