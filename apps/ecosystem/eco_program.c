@@ -26,7 +26,6 @@ const char *const eco_names[ECO_PROCS] = {
 #define LIGHT_TURN_GAIN     3
 #define LIGHT_BRIGHT      150   /* sum of both light codes: the station is near */
 #define LIGHT_DARK         40   /* sum below this: the light is behind us */
-#define SEARCH_TURN        40
 #define ESCAPE_CYCLES      40
 #define ESCAPE_SPEED     (-250)
 #define ESCAPE_TURN       450
@@ -35,7 +34,7 @@ const char *const eco_names[ECO_PROCS] = {
 #define WANDER_KICK       120
 #define COMPETE_GAIN        2
 #define COMPETE_NEAR      150   /* competitor light sum: close to a lamp */
-#define BAT_HUNGRY        181   /* ~7.1 V: about 45 % charge */
+#define BAT_HUNGRY        184   /* ~7.2 V: about 50 % charge */
 #define BAT_FED_CHARGING  216   /* ~8.45 V with the charge boost: ~95 % */
 #define BAT_FED           212
 
@@ -129,9 +128,10 @@ static void photo(struct eco_program *p)
     if (!hungry(p) || p->in.charging) {
         return;
     }
-    if (sum < LIGHT_DARK) {
-        add(p, ECO_PHOTO, &p->turn, SEARCH_TURN);
-    } else {
+    /* Light out of sight (behind us or shadowed): no pull at all, so that
+     * cruise and wander carry the robot on until it sees the light again (a
+     * search turn here made it circle on the spot behind an obstacle). */
+    if (sum >= LIGHT_DARK) {
         add(p, ECO_PHOTO, &p->turn, LIGHT_TURN_GAIN * (p->in.light_l - p->in.light_r));
     }
 }

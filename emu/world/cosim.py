@@ -25,6 +25,14 @@ from qmp_link import QMPLink, qom_get, qom_set
 IO = "/machine/robocube-io"
 LOCKSTEP = "/machine/lockstep"
 ICOUNT = "shift=8,sleep=off"
+# The step: one tick of the ecosystem firmware's 128 Hz kernel clock (two per
+# 64 Hz minor cycle). Steps of 10 ms would put boundaries at every phase of the
+# cycle, some within microseconds of the firmware's motor writes or sensor
+# reads, where the slightest difference in guest timing decides on which side
+# of the boundary a value falls (seen: one run in five differing by a cycle).
+# Aligned with the tick, every boundary keeps the same, wide distance (the
+# tick's phase) from the firmware's reads and writes.
+STEP_NS = 7_812_500
 FRAME_TIMEOUT_S = 60.0
 ANALOG = ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
           "comp_right")
@@ -137,7 +145,7 @@ class Emulator:
         return err
 
 
-def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=10_000_000, on_step=None,
+def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step=None,
                  on_console=None):
     """Runs the lockstep loop for `seconds` of virtual time (or until the
     battery is empty). names: the program's process names, in index order."""

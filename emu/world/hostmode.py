@@ -32,7 +32,7 @@ class HostProgram:
         return mask, out
 
 
-def run_host(world, rec, lib_path, seed, seconds, step_s=0.01, on_step=None):
+def run_host(world, rec, lib_path, seed, seconds, step_s=0.0078125, on_step=None):
     prog = HostProgram(lib_path, seed)
     wiring = world.arena["wiring"]
     motors = [MotorModel(), MotorModel()]

@@ -29,14 +29,16 @@ class MotorModel:
         self.encoder = 0
 
     def advance(self, signed_duty, dt):
-        """Runs dt seconds (whole 1 ms sub-steps) at signed_duty (-1..1);
-        returns the counts turned."""
+        """Runs dt seconds at signed_duty (-1..1), in equal sub-steps of at
+        most 1 ms; returns the counts turned."""
         before = self.encoder
-        decay = 1.0 - math.exp(-MOTOR_STEP_S / self.tau)
+        n = max(1, math.ceil(dt / MOTOR_STEP_S - 1e-9))
+        h = dt / n
+        decay = 1.0 - math.exp(-h / self.tau)
         target = signed_duty * self.max_speed
-        for _ in range(int(round(dt / MOTOR_STEP_S))):
+        for _ in range(n):
             self.speed += (target - self.speed) * decay
-            self.frac += self.speed * MOTOR_STEP_S
+            self.frac += self.speed * h
             whole = int(self.frac)
             self.frac -= whole
             self.encoder += whole

@@ -10,8 +10,9 @@ class Recorder:
     virtual time in ns and the pose and charge as IEEE doubles, so two runs
     have the same hash only if their trajectories are identical bit for bit."""
 
-    def __init__(self, world, every=10):
+    def __init__(self, world, every=10, trace=None):
         self.world = world
+        self.trace = trace          # a text file: one line per step (t_ns x y th soc)
         self.sha = hashlib.sha256()
         self.every = every          # keep every n-th step for the picture
         self.n = 0
@@ -23,6 +24,8 @@ class Recorder:
     def step(self, t_ns):
         w = self.world
         self.sha.update(struct.pack("<qdddd", t_ns, w.x, w.y, w.th, w.soc))
+        if self.trace:
+            self.trace.write(f"{t_ns} {w.x!r} {w.y!r} {w.th!r} {w.soc!r}\n")
         if self.n % self.every == 0:
             self.t.append(w.t)
             self.x.append(w.x)

@@ -20,6 +20,7 @@ from view import LiveView, PlainProgress                  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_ARENA = os.path.join(HERE, "arenas", "default.json")
+STEP_MS = 7.8125
 
 
 def parse_args(argv):
@@ -31,9 +32,11 @@ def parse_args(argv):
     ap.add_argument("--elf", help="firmware image (emulated mode)")
     ap.add_argument("--qemu", default=os.environ.get("BSCHED_QEMU"), help="qemu-system-m68k")
     ap.add_argument("--host-lib", help="libeco_host.so (fast mode)")
-    ap.add_argument("--step-ms", type=float, default=10.0, help="lockstep step (default 10 ms)")
+    ap.add_argument("--step-ms", type=float, default=STEP_MS,
+                    help=f"lockstep step (default {STEP_MS} ms: one kernel tick, see cosim.py)")
     ap.add_argument("--out", default="build/run", help="folder for ecosystem.png and summary.json")
     ap.add_argument("--view", choices=("auto", "live", "plain", "none"), default="auto")
+    ap.add_argument("--trace", help="write every step's pose (t_ns x y th soc) to this file")
     a = ap.parse_args(argv)
     if not a.seconds > 0:
         ap.error("--seconds must be positive")
@@ -57,7 +60,8 @@ def main(argv=None):
         print(f"run.py: {e}", file=sys.stderr)
         return 2
     world = World(arena, a.seed)
-    rec = Recorder(world)
+    trace = open(a.trace, "w") if a.trace else None
+    rec = Recorder(world, trace=trace)
     mode = "host fast mode" if a.host else "emulated RoboCube, lockstep"
     view = a.view
     if view == "auto":
@@ -99,6 +103,8 @@ def main(argv=None):
                 shown.update(world, rec, force=True)
             shown.__exit__(None, None, None)
     wall = time.monotonic() - wall0
+    if trace:
+        trace.close()
     s = rec.summary()
     s.update({"mode": "host" if a.host else "emulated", "seed": a.seed, "arena": a.arena,
               "wall_s": round(wall, 2), "real_time_factor": round(world.t / wall, 2) if wall else None,

@@ -30,16 +30,25 @@ def run(tmp_path, *args, expect=0):
     return p, summary
 
 
-def emulated(tmp_path, qemu, elf, lib, seconds, seed):
+def emulated(tmp_path, qemu, elf, lib, seconds, seed, *extra):
     return run(tmp_path, "--elf", elf, "--qemu", qemu, "--host-lib", lib,
-               "--seconds", str(seconds), "--seed", str(seed))
+               "--seconds", str(seconds), "--seed", str(seed), *extra)
+
+
+def first_difference(path_a, path_b):
+    with open(path_a) as fa, open(path_b) as fb:
+        for n, (la, lb) in enumerate(zip(fa, fb)):
+            if la != lb:
+                return f"step {n}: {la.strip()} / {lb.strip()}"
+    return None
 
 
 def test_same_seed_same_trajectory_other_seed_another(tmp_path, qemu, eco_elf, host_lib):
-    p1, a = emulated(tmp_path / "a", qemu, eco_elf, host_lib, 20, 1)
-    _, b = emulated(tmp_path / "b", qemu, eco_elf, host_lib, 20, 1)
+    ta, tb = tmp_path / "a.trace", tmp_path / "b.trace"
+    p1, a = emulated(tmp_path / "a", qemu, eco_elf, host_lib, 20, 1, "--trace", str(ta))
+    _, b = emulated(tmp_path / "b", qemu, eco_elf, host_lib, 20, 1, "--trace", str(tb))
     _, c = emulated(tmp_path / "c", qemu, eco_elf, host_lib, 20, 2)
-    assert a["trajectory_sha256"] == b["trajectory_sha256"]
+    assert a["trajectory_sha256"] == b["trajectory_sha256"], first_difference(ta, tb)
     assert a["trajectory_sha256"] != c["trajectory_sha256"]
     assert a["distance_m"] > 1.0                   # the robot moved
     assert a["program_status_lines"] >= 70         # 4 status lines per second from the firmware

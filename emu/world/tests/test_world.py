@@ -117,3 +117,15 @@ def test_recorder_hash_follows_the_trajectory(arena):
         w.step(0.01, d, d, 0.1, 0.1)
         r.step(10_000_000)
     assert r1.digest() != r2.digest()
+
+
+def test_motor_model_matches_the_board_response():
+    """The wheels' model (motors.py) follows the board's first-order response:
+    speed 2000 (1 - e^(-t/tau)) counts/s at full duty, tau 50 ms."""
+    from motors import MotorModel
+    m = MotorModel()
+    turned = sum(m.advance(1.0, 0.0078125) for _ in range(128))       # 1 s
+    exact = 2000.0 * (1.0 - 0.05 * (1.0 - math.exp(-1.0 / 0.05)))    # integral of the speed
+    assert m.speed == pytest.approx(2000.0 * (1 - math.exp(-20.0)))
+    assert abs(turned - exact) <= 1
+    assert m.advance(-1.0, 1.0) < 0
