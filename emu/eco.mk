@@ -39,5 +39,5 @@ check-eco:
 eco-survival:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware eco-host APP=ecosystem
-	@$(ECO_TEST_ENV) ECO_SURVIVAL_SECONDS=600 $(PYTHON) -m pytest -q -p no:cacheprovider \
+	@$(ECO_TEST_ENV) ECO_SURVIVAL_SECONDS=600 $(PYTHON) -m pytest -q -rP -p no:cacheprovider \
 	    $(ROOT)/emu/world/tests/test_ecosystem.py -k survival_emulated_and_alike

@@ -23,7 +23,9 @@
 #include "eco_program.h"
 
 #define ECO_CYCLE_TICKS   2u     /* 128 Hz ticks: 64 Hz minor cycles */
-#define ECO_STATUS_CYCLES 16u    /* a status line every 250 ms */
+/* A status line every 15 cycles (234 ms): 15 is odd, so the reported cycle
+ * walks through every phase of the 16-cycle major cycle. */
+#define ECO_STATUS_CYCLES 15u
 #define ECO_SEED          0x1D2C3B4Au
 
 static struct bsched sched;

@@ -78,6 +78,8 @@ def test_survival_emulated_and_alike_on_the_host(tmp_path, qemu, eco_elf, host_l
     _, h = run(tmp_path / "h", "--host", "--host-lib", host_lib, "--seconds", str(SURVIVAL_S),
                "--seed", "3")
     minimum = 2 if SURVIVAL_S >= 600 else 1
+    print("board:", json.dumps(e))
+    print("host: ", json.dumps(h))
     check_goals(e, SURVIVAL_S, minimum)
     check_goals(h, SURVIVAL_S, minimum)
     assert abs(h["recharges"] - e["recharges"]) <= 1
