@@ -8,8 +8,8 @@
 FW_BUILD     := $(BUILD)/firmware
 # The image of firmware app NAME (apps/NAME/, built by apps/apps.mk).
 app_elf       = $(FW_BUILD)/$(1)/$(1).elf
-# Processes the firmware's struct bsched has room for (Table 1 has 9).
-FW_MAX_PROCS := 16
+# Processes the firmware's struct bsched has room for (Table 1 has 9; PDL programs up to 32).
+FW_MAX_PROCS := 32
 FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched \
                 -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -ffunction-sections -fdata-sections \
                 -fno-tree-loop-distribute-patterns -MMD -MP

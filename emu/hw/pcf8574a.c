@@ -6,6 +6,7 @@
  * read or write and released by the next read or write; the board routes it
  * to /IRQ2 through a jumper, which this model leaves open (state visible as a
  * host property only).
+ * Fault injection: host property "nack" = 1 makes the chip ignore its address.
  */
 #include "qemu/osdep.h"
 #include "qemu/module.h"
@@ -16,6 +17,15 @@
 uint8_t pcf8574a_pins(PCF8574AState *s)
 {
     return s->latch & s->ext;
+}
+
+static int pcf8574a_event(I2CSlave *i2c, enum i2c_event event)
+{
+    PCF8574AState *s = PCF8574A(i2c);
+    if (s->nack && (event == I2C_START_SEND || event == I2C_START_RECV)) {
+        return -1;              /* address not acknowledged */
+    }
+    return 0;
 }
 
 static int pcf8574a_send(I2CSlave *i2c, uint8_t data)
@@ -78,6 +88,17 @@ static int64_t prop_addr_get(void *opaque, int i)
     return I2C_SLAVE(opaque)->address;
 }
 
+static int64_t prop_nack_get(void *opaque, int i)
+{
+    return PCF8574A(opaque)->nack;
+}
+
+static bool prop_nack_set(void *opaque, int i, int64_t v, Error **errp)
+{
+    PCF8574A(opaque)->nack = v != 0;
+    return true;
+}
+
 static void pcf8574a_instance_init(Object *obj)
 {
     PCF8574AState *s = PCF8574A(obj);
@@ -87,6 +108,7 @@ static void pcf8574a_instance_init(Object *obj)
     rc_prop_add_int(obj, "pins", 0, 255, prop_pins_get, NULL, obj, 0);
     rc_prop_add_int(obj, "int", 0, 1, prop_int_get, NULL, obj, 0);
     rc_prop_add_int(obj, "i2c-address", 0, 127, prop_addr_get, NULL, obj, 0);
+    rc_prop_add_int(obj, "nack", 0, 1, prop_nack_get, prop_nack_set, obj, 0);
 }
 
 static void pcf8574a_class_init(ObjectClass *klass, void *data)
@@ -95,6 +117,7 @@ static void pcf8574a_class_init(ObjectClass *klass, void *data)
     I2CSlaveClass *k = I2C_SLAVE_CLASS(klass);
     dc->reset = pcf8574a_reset;
     dc->desc = "PCF8574A 8-bit quasi-bidirectional I/O expander";
+    k->event = pcf8574a_event;
     k->send = pcf8574a_send;
     k->recv = pcf8574a_recv;
 }

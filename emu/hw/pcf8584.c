@@ -7,6 +7,11 @@
  * set, the controller requests its interrupt with the vector in S3.
  * Slave mode, arbitration loss, bus errors, long-distance mode: not modelled
  * (there is no other master on the bus).
+ * Fault injection: the host property "bus-stuck" = 1 holds the bus low (as a
+ * slave holding SDA would): BB reads busy, a START does nothing and a byte on
+ * the wire never completes (PIN stays 1, no interrupt) until it is cleared.
+ * Writing S1 with ES0 = 0 (the software reset drivers use) switches the serial
+ * interface off and so releases the bus lines: an open transfer is dropped.
  */
 #include "qemu/osdep.h"
 #include "qemu/log.h"
@@ -55,6 +60,11 @@ static void pcf_begin_byte(PCF8584State *s)
 static void pcf_byte_done(void *opaque)
 {
     PCF8584State *s = opaque;
+    if (s->stuck) {
+        /* SCL/SDA held low: the byte never ends; finish when released. */
+        s->byte_stalled = true;
+        return;
+    }
     if (s->rx_pending) {
         s->s0 = s->rx_byte;
         s->rx_pending = false;
@@ -137,7 +147,8 @@ static uint64_t pcf_read(void *opaque, hwaddr off, unsigned size)
             /* Serial interface off: S1 reads back the control bits. */
             return (s->pin ? S1_PIN : 0) | (s->ctrl & 0x7F);
         }
-        return (s->pin ? S1_PIN : 0) | (s->lrb ? ST_LRB : 0) | (s->busy ? 0 : ST_BB);
+        return (s->pin ? S1_PIN : 0) | (s->lrb ? ST_LRB : 0) |
+               (s->busy || s->stuck ? 0 : ST_BB);
     }
     reg = pcf_select_reg0(s);
     v = *reg;
@@ -169,6 +180,11 @@ static void pcf_write_control(PCF8584State *s, uint8_t v)
         s->pin = true;
     }
     if (!(v & S1_ES0)) {
+        /* Serial interface off: the controller lets go of the bus. */
+        if (s->busy) {
+            pcf_stop(s);
+        }
+        s->byte_stalled = false;
         pcf_update_irq(s);
         return;
     }
@@ -178,6 +194,11 @@ static void pcf_write_control(PCF8584State *s, uint8_t v)
         }
     }
     if (sta) {
+        if (s->stuck && !s->busy) {
+            /* The bus is not free: no START condition can be generated. */
+            pcf_update_irq(s);
+            return;
+        }
         if (!s->busy) {
             pcf_send_address(s, s->s0);
             return;
@@ -242,6 +263,7 @@ static void pcf_reset(DeviceState *dev)
     s->ctrl = 0;
     s->pin = true;
     s->busy = s->lrb = s->receiving = s->repstart_armed = s->rx_pending = false;
+    s->byte_stalled = false;    /* "bus-stuck" is external: kept across reset */
     if (s->intc) {
         pcf_update_irq(s);
     }
@@ -266,8 +288,25 @@ static int64_t prop_level_get(void *opaque, int index)
     return PCF8584(opaque)->irq_level;
 }
 
+static int64_t prop_stuck_get(void *opaque, int index)
+{
+    return PCF8584(opaque)->stuck;
+}
+
+static bool prop_stuck_set(void *opaque, int index, int64_t v, Error **errp)
+{
+    PCF8584State *s = PCF8584(opaque);
+    s->stuck = v != 0;
+    if (!s->stuck && s->byte_stalled) {
+        s->byte_stalled = false;
+        pcf_byte_done(s);       /* released: the stalled byte completes */
+    }
+    return true;
+}
+
 static void pcf_instance_init(Object *obj)
 {
+    rc_prop_add_int(obj, "bus-stuck", 0, 1, prop_stuck_get, prop_stuck_set, obj, 0);
     rc_prop_add_int(obj, "vector", 0, 255, prop_s3_get, NULL, obj, 0);
     rc_prop_add_int(obj, "irq-level", 0, 7, prop_level_get, NULL, obj, 0);
 }

@@ -7,6 +7,8 @@
  * first byte after power-on is 0x80 and the first byte of a read is stale).
  * Analog values are host-set 8-bit codes (0..255 = AGND..VREF); differential
  * channels give the two's complement difference, clamped to -128..127.
+ * Fault injection: host property "nack" = 1 makes the chip ignore its address
+ * (a dead or unplugged chip); it survives a reset.
  */
 #include "qemu/osdep.h"
 #include "qemu/module.h"
@@ -49,6 +51,9 @@ static uint8_t convert(PCF8591State *s, unsigned ch)
 static int pcf8591_event(I2CSlave *i2c, enum i2c_event event)
 {
     PCF8591State *s = PCF8591(i2c);
+    if (s->nack && (event == I2C_START_SEND || event == I2C_START_RECV)) {
+        return -1;              /* address not acknowledged */
+    }
     if (event == I2C_START_SEND) {
         s->expect_control = true;
     }
@@ -124,6 +129,17 @@ static int64_t prop_addr_get(void *opaque, int i)
     return I2C_SLAVE(opaque)->address;
 }
 
+static int64_t prop_nack_get(void *opaque, int i)
+{
+    return PCF8591(opaque)->nack;
+}
+
+static bool prop_nack_set(void *opaque, int i, int64_t v, Error **errp)
+{
+    PCF8591(opaque)->nack = v != 0;
+    return true;
+}
+
 static void pcf8591_instance_init(Object *obj)
 {
     for (int i = 0; i < 4; i++) {
@@ -135,6 +151,7 @@ static void pcf8591_instance_init(Object *obj)
     rc_prop_add_int(obj, "aout-enabled", 0, 1, prop_aout_en_get, NULL, obj, 0);
     rc_prop_add_int(obj, "control", 0, 255, prop_control_get, NULL, obj, 0);
     rc_prop_add_int(obj, "i2c-address", 0, 127, prop_addr_get, NULL, obj, 0);
+    rc_prop_add_int(obj, "nack", 0, 1, prop_nack_get, prop_nack_set, obj, 0);
 }
 
 static void pcf8591_class_init(ObjectClass *klass, void *data)

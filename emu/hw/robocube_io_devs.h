@@ -106,6 +106,8 @@ struct PCF8584State {
     bool rx_pending;        /* a byte is being received; lands in S0 on completion */
     uint8_t rx_byte;
     QEMUTimer *done_timer;  /* byte transfer completion (9 SCL clocks) */
+    bool stuck;             /* fault injection: bus held low (host property) */
+    bool byte_stalled;      /* a byte's time ran out while the bus was stuck */
 };
 
 /* ---- PCF8591 / PCF8574A (pcf8591.c, pcf8574a.c) --------------------------- */
@@ -119,6 +121,7 @@ struct PCF8591State {
     uint8_t result;         /* last conversion, sent on the next read byte */
     uint8_t channel;        /* channel of the next conversion */
     bool expect_control;    /* next written byte is the control byte */
+    bool nack;              /* fault injection: does not acknowledge its address */
 };
 
 #define TYPE_PCF8574A "pcf8574a"
@@ -129,6 +132,7 @@ struct PCF8574AState {
     uint8_t ext;            /* host drive: bit 0 = pin pulled low from outside */
     uint8_t last_seen;      /* pin levels at the last read/write (INT reference) */
     bool int_pending;       /* /INT asserted */
+    bool nack;              /* fault injection: does not acknowledge its address */
 };
 uint8_t pcf8574a_pins(PCF8574AState *s);
 

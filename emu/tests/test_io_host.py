@@ -12,7 +12,10 @@ READ_WRITE = ([(IO, f"ain{i}") for i in range(24)] +
               [(f"{IO}/adc{i}", f"ain{k}") for i in range(6) for k in range(4)] +
               [(TPU, "inputs")] + [(TPU, f"ch{c}-pin") for c in range(16)] +
               [(f"{IO}/motor{m}", p) for m in range(3)
-               for p in ("encoder", "model-enabled", "max-speed", "time-constant-ms")])
+               for p in ("encoder", "model-enabled", "max-speed", "time-constant-ms")] +
+              [(f"{IO}/adc{i}", "nack") for i in range(6)] +
+              [(f"{IO}/bio{i}", "nack") for i in range(2)] +
+              [(f"{IO}/i2c-{x}", "bus-stuck") for x in "ab"])
 READ_ONLY = ([(IO, f"aout{i}") for i in range(6)] +
              [(IO, f"aout{i}-enabled") for i in range(6)] +
              [(IO, p) for p in ("bio-out", "bio-pins", "fastbin", "duart-opr")] +
@@ -29,7 +32,7 @@ READ_ONLY = ([(IO, f"aout{i}") for i in range(6)] +
 def test_every_property_readable(board):
     for path, prop in READ_WRITE + READ_ONLY:
         assert isinstance(board.get(path, prop), int), (path, prop)
-    assert (len(READ_WRITE), len(READ_ONLY)) == (80, 123)        # the table in emu/IO.md
+    assert (len(READ_WRITE), len(READ_ONLY)) == (90, 123)        # the table in emu/IO.md
 
 
 def test_read_only_properties_refuse_writes(board):

@@ -43,15 +43,15 @@ def symbols(elf, cross="m68k-linux-gnu-"):
     return table
 
 
-def run_until_result(cmd, seconds):
-    """Runs QEMU (cmd) until the console shows a KTEST RESULT line or `seconds`
-    pass; returns (console bytes, stderr bytes)."""
+def run_until_result(cmd, seconds, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
+    """Runs QEMU (cmd) until the console shows a KTEST RESULT line (or the
+    regex `marker`) or `seconds` pass; returns (console bytes, stderr bytes)."""
     proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE)
     out = b""
     deadline = time.monotonic() + seconds
     try:
-        while not re.search(rb"KTEST RESULT [^\r\n]*\r?\n", out):
+        while not re.search(marker, out):
             left = deadline - time.monotonic()
             if left <= 0 or proc.poll() is not None:
                 break
@@ -67,13 +67,13 @@ def run_until_result(cmd, seconds):
     return out, err
 
 
-def trace_pcs(qemu, elf, seconds=60.0):
+def trace_pcs(qemu, elf, seconds=60.0, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(tmp) / "exec.log"
         out, _ = run_until_result(
             [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
              "-monitor", "none", "-serial", "stdio", "-icount", "shift=8,sleep=off",
-             "-singlestep", "-d", "exec,nochain", "-D", str(log)], seconds)
+             "-singlestep", "-d", "exec,nochain", "-D", str(log)], seconds, marker)
         pcs = []
         with open(log, errors="replace") as f:
             for line in f:

@@ -1,0 +1,3 @@
+# Test-only image of the motion drivers (TPU, motors, odometry): a line
+# protocol on the console that drivers/tests/target/ drives over stdin while
+# it checks the board model over QMP. Not a user shell (that is apps/shell).

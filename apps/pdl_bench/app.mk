@@ -1,0 +1,5 @@
+# PDL benchmark and overrun image (pdl/README.md "Speed"): the cost of a PDL
+# cycle for 5..30 processes, the CPU load at f0 = 1024 Hz with 20 processes
+# and 40 quantities, the cycle thread's stack, then an overloaded program.
+# Kernel tick 1024 Hz: one PDL cycle per tick.
+pdl_bench_TICK_HZ := 1024

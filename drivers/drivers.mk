@@ -1,0 +1,49 @@
+# Board I/O drivers (drivers/i2c*.c, analog, bio, binin, fastout, sampler,
+# board_io): host unit tests and the target suite on the emulated board.
+#
+#   make check-drivers-unit     cmocka: I2C state machine vs a scripted fake
+#                               controller; analog numbering and range checks
+#   make check-drivers-target   apps/iotest on qemu -M robocube, driven over
+#                               the console and QMP (drivers/tests/target)
+#   make drivers-size           text/data/bss of the I/O drivers (CPU32, -Os)
+
+DRV_BUILD := $(BUILD)/drivers
+DRV_HOST_TESTS := $(DRV_BUILD)/tests/test_i2c_fsm $(DRV_BUILD)/tests/test_analog
+DRV_IO_SRCS := drivers/i2c.c drivers/i2c_fsm.c drivers/analog.c drivers/bio.c drivers/binin.c \
+               drivers/fastout.c drivers/sampler.c drivers/board_io.c
+
+ALL += $(DRV_HOST_TESTS)
+CHECKS += drivers-unit drivers-target
+HOST_UNIT_CHECKS += drivers-unit
+
+.PHONY: check-drivers-unit check-drivers-target drivers-size
+
+$(DRV_BUILD)/tests/test_i2c_fsm: drivers/tests/host/test_i2c_fsm.c drivers/i2c_fsm.c drivers/i2c_fsm.h drivers/i2c.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -DI2C_FSM_FAKE_HW -o $@ $< drivers/i2c_fsm.c -lcmocka
+
+$(DRV_BUILD)/tests/test_analog: drivers/tests/host/test_analog.c drivers/analog.c drivers/analog.h drivers/i2c.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ $< drivers/analog.c -lcmocka
+
+check-drivers-unit: $(DRV_HOST_TESTS)
+	@$(SETUP) base
+	@p=0; f=0; rc=0; \
+	for t in $(DRV_HOST_TESTS); do \
+	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
+	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
+	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	done; \
+	$(call record,drivers-unit,$$p,$$f); [ $$rc -eq 0 ]
+
+check-drivers-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=iotest
+	@BSCHED_QEMU=$(QEMU_M68K) IOTEST_ELF=$(call app_elf,iotest) FW_ICOUNT=$(FW_ICOUNT) \
+	    ci/pytest-suite drivers-target drivers/tests/target
+
+# Size of the I/O drivers as linked into the iotest image (archive members).
+drivers-size: $(BUILD)/firmware/iotest/iotest.elf
+	@$(CROSS_SIZE) -t $(patsubst drivers/%.c,$(FW_BUILD)/iotest/obj/drivers/%.c.o,$(DRV_IO_SRCS))

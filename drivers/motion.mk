@@ -1,0 +1,48 @@
+# The motion drivers (drivers/tpu.c, motor.c, motor_pi.c, odometry.c):
+#   make check-motion-unit     host cmocka tests: PI controller, odometry
+#   make check-motion-target   apps/motiontest on the emulated board, checked over QMP
+#   make motion-size           text/data/bss of the motion drivers for CPU32 (-Os)
+
+MOTION_BUILD      := $(BUILD)/motion
+MOTION_UNIT_TESTS := $(MOTION_BUILD)/test_motor_pi $(MOTION_BUILD)/test_odometry
+MOTION_SRCS       := drivers/tpu.c drivers/motor.c drivers/motor_pi.c drivers/odometry.c
+
+CHECKS += motion-unit motion-target
+HOST_UNIT_CHECKS += motion-unit
+
+.PHONY: motion-unit-tests check-motion-unit check-motion-target motion-size
+motion-unit-tests: $(MOTION_UNIT_TESTS)
+ALL += $(MOTION_UNIT_TESTS)
+
+$(MOTION_BUILD)/test_motor_pi: drivers/tests/test_motor_pi.c drivers/motor_pi.c drivers/motor_pi.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_motor_pi.c drivers/motor_pi.c -lcmocka
+
+$(MOTION_BUILD)/test_odometry: drivers/tests/test_odometry.c drivers/odometry.c drivers/odometry.h drivers/drv_err.c
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_odometry.c drivers/odometry.c \
+	    drivers/drv_err.c -lcmocka -lm
+
+check-motion-unit: $(MOTION_UNIT_TESTS)
+	@$(SETUP) base
+	@p=0; f=0; rc=0; \
+	for t in $(MOTION_UNIT_TESTS); do \
+	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
+	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
+	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
+	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	done; \
+	$(call record,motion-unit,$$p,$$f); [ $$rc -eq 0 ]
+
+check-motion-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=motiontest
+	@BSCHED_QEMU=$(QEMU_M68K) MOTION_ELF=$(call app_elf,motiontest) FW_ICOUNT=$(FW_ICOUNT) \
+	    ci/pytest-suite motion-target drivers/tests/target_motion
+
+motion-size:
+	@$(MAKE) --no-print-directory firmware APP=motiontest
+	@$(CROSS_SIZE) $(patsubst %,$(FW_BUILD)/motiontest/obj/%.o,$(MOTION_SRCS)) | awk \
+	    '{ print } NR>1 { t += $$1; d += $$2; b += $$3 } \
+	     END { printf "motion drivers: text %d, data %d, bss %d bytes\n", t, d, b }'

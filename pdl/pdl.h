@@ -1,0 +1,236 @@
+/*
+ * PDL: behaviour processes on the B-scheduler (Birk, Kenn, Steels 2002,
+ * section 5). The one header a PDL program includes, on the board and on
+ * the host.
+ *
+ * A program is a network of processes that communicate only through
+ * quantities: bounded variables holding a current value (what value(q)
+ * returns all cycle long) and the sum of the cycle's contributions
+ * (add_value(q, e)), committed and clipped to [min, max] at the end of the
+ * cycle. Every cycle the runtime reads the sensors, runs the due processes
+ * (one bsched minor cycle: a process with priority value pv runs every
+ * 2^pv cycles), commits the sums and writes the actuators.
+ *
+ *     struct pdl_quantity speed;             // integer (fixed point) quantity
+ *     struct pdl_sensor light;               // read-only, refreshed every cycle
+ *     static void seek(void) { add_value(speed, (value(light) - 128) / 4); }
+ *     ...
+ *     add_quantity(&speed, -1000, 1000, 0);
+ *     add_sensor(&light, 0, 255);
+ *     pdl_bind_sensor(&light, PDL_ANALOG_IN, 0);
+ *     pdl_bind_actuator(&speed, PDL_MOTOR, 0);
+ *     add_process(seek);
+ *     run_pdl();
+ *
+ * Every function returns PDL_OK (or an id >= 0) or a negative PDL_ERR_*
+ * code; misuse is refused, counted (pdl_get_stats) and reported (console
+ * on the board, pdl_last_message() on the host), never undefined.
+ */
+#ifndef PDL_H
+#define PDL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Capacities (compile time; PDL_MAX_PROCESSES <= BSCHED_MAX_PROCS). */
+#ifndef PDL_MAX_PROCESSES
+#define PDL_MAX_PROCESSES 32
+#endif
+#ifndef PDL_MAX_QUANTITIES
+#define PDL_MAX_QUANTITIES 64
+#endif
+#ifndef PDL_MAX_BINDINGS
+#define PDL_MAX_BINDINGS 32
+#endif
+/* The plan of one major cycle is recorded at run_pdl() when it has at most
+ * PDL_PLAN_CYCLES minor cycles (maxpv <= 8) and PDL_PLAN_RUNS process runs;
+ * larger sets are stepped live through bsched_run_cycle (same schedule). */
+#ifndef PDL_PLAN_CYCLES
+#define PDL_PLAN_CYCLES 256
+#endif
+#ifndef PDL_PLAN_RUNS
+#define PDL_PLAN_RUNS 1024
+#endif
+/* Largest priority value: a process runs every 2^pv cycles (bsched's range). */
+#define PDL_MAX_PV 31
+
+/* Status codes. */
+#define PDL_OK                       0
+#define PDL_ERR_NULL               (-1)  /* a NULL quantity or process */
+#define PDL_ERR_RUNNING            (-2)  /* not allowed after run_pdl() */
+#define PDL_ERR_TOO_MANY_PROCESSES (-3)  /* more than PDL_MAX_PROCESSES */
+#define PDL_ERR_TOO_MANY_QUANTITIES (-4) /* more than PDL_MAX_QUANTITIES */
+#define PDL_ERR_PV_RANGE           (-5)  /* pv < 0 or pv > PDL_MAX_PV */
+#define PDL_ERR_BOUNDS             (-6)  /* min > max, or the initial value outside */
+#define PDL_ERR_TWICE              (-7)  /* quantity declared or bound twice */
+#define PDL_ERR_UNDECLARED         (-8)  /* quantity used before add_quantity/add_sensor */
+#define PDL_ERR_NO_PROCESSES       (-9)  /* run_pdl() with no process */
+#define PDL_ERR_PORT              (-10)  /* no such port, or the wrong direction */
+#define PDL_ERR_PORT_TAKEN        (-11)  /* two actuator quantities on one output */
+#define PDL_ERR_FREQUENCY         (-12)  /* f0 out of range */
+#define PDL_ERR_NOT_RUNNING       (-13)  /* cycles asked for before run_pdl() */
+#define PDL_ERR_DRIVER            (-14)  /* a driver refused (code in the report) */
+#define PDL_ERR_KERNEL            (-15)  /* the kernel refused the cycle thread */
+#define PDL_ERR_OUTSIDE_PROCESS   (-16)  /* add_value outside a process body */
+#define PDL_ERR_TOO_MANY_BINDINGS (-17)  /* more than PDL_MAX_BINDINGS */
+
+/* ---- quantities ---- */
+enum pdl_kind { PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR };
+
+/* Bookkeeping shared by every kind (first member of each quantity). */
+struct pdl_head {
+    uint16_t id;        /* 1 + index in the runtime's table; 0 = not declared */
+    uint8_t kind;       /* enum pdl_kind */
+    uint8_t pending;    /* has contributions this cycle (on the commit list) */
+};
+
+/* Integer quantity: the programmer picks the fixed-point scale (e.g.
+ * permille, or 1/256 units). Contributions are summed exactly (64 bits),
+ * so the committed value is independent of the order of the processes. */
+struct pdl_quantity {
+    struct pdl_head head;
+    int32_t cur;        /* value of the previous cycle: value(q) */
+    int32_t min, max;
+    int64_t sum;        /* this cycle's contributions */
+};
+
+/* Float quantity (soft-float on the CPU32: about ten times the cost).
+ * Float addition is not associative: the committed value may differ in
+ * the last bits with the order of the contributions. */
+struct pdl_fquantity {
+    struct pdl_head head;
+    float cur;
+    float min, max;
+    float sum;
+};
+
+/* Sensor quantity: read-only. It has no sum, so add_value(sensor, e) does
+ * not compile ("struct pdl_sensor has no member named 'sum'"). Refreshed at
+ * the start of every cycle from its port (pdl_bind_sensor), clipped. */
+struct pdl_sensor {
+    struct pdl_head head;
+    int32_t cur;
+    int32_t min, max;
+};
+
+/* Declares a quantity to the runtime (before run_pdl()). */
+int add_quantity(struct pdl_quantity *q, int32_t min, int32_t max, int32_t initial);
+int add_fquantity(struct pdl_fquantity *q, float min, float max, float initial);
+int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max);
+
+/* value(q): the value of q from the previous cycle (an rvalue). */
+#define value(q) ((void)0, (q).cur)
+
+/* add_value(q, e): adds e (converted to q's type) to q's next value. The
+ * cycle's contributions are summed and take effect at the end of the cycle,
+ * clipped to [min, max]. Only from a process body. q is evaluated more
+ * than once (use a quantity's name, as in the paper). */
+#define add_value(q, e)                                             \
+    do {                                                            \
+        (q).sum += (__typeof__((q).sum))(e);                        \
+        if (!(q).head.pending)                                      \
+            pdl_pend(&(q).head);                                    \
+    } while (0)
+
+/* Puts a quantity on the commit list (add_value's first use in a cycle). */
+void pdl_pend(struct pdl_head *q);
+
+/* ---- processes ---- */
+typedef void (*pdl_process_fn)(void);
+
+/* Registers a process: runs every cycle (pv 0), or every 2^pv cycles.
+ * Returns the process id (0, 1, ...) or an error. */
+int add_process(pdl_process_fn f);
+int add_process_pv(pdl_process_fn f, int pv);
+
+/* ---- time ---- */
+/* Time from the start of the previous cycle to the start of this one (the
+ * nominal cycle period in the first cycle). */
+float dt(void);
+uint32_t dt_us(void);
+/* In a process body: the time from the start of the cycle in which this
+ * process last ran to the start of this cycle (2^pv nominal periods on its
+ * first run); for a pv 0 process the same as dt(). 0 outside a process. */
+float dt_process(void);
+uint32_t dt_process_us(void);
+
+/* ---- running ---- */
+/* Cycle rate f0 in Hz (before run_pdl). On the board it is rounded to a
+ * whole number of kernel ticks (pdl_frequency() tells what it became);
+ * default PDL_DEFAULT_HZ. */
+#ifndef PDL_DEFAULT_HZ
+#define PDL_DEFAULT_HZ 100u
+#endif
+int pdl_set_frequency(uint32_t hz);
+/* The cycle rate in effect, in millihertz (1024 Hz = 1024000). */
+uint32_t pdl_frequency_mhz(void);
+/* Nominal cycle period in microseconds. */
+uint32_t pdl_period_us(void);
+
+/* Plans the processes (bsched_init) and starts the cycles: on the board the
+ * cycle thread (highest application priority) starts; on the host nothing
+ * runs until pdl_run_cycles(). After it, add_process/add_quantity/bind are
+ * refused. */
+int run_pdl(void);
+/* Board: asks the cycle thread to stop after its current cycle and waits
+ * for it (bounded: timeout_ms). Host: stops accepting cycles. */
+int pdl_stop(uint32_t timeout_ms);
+/* Forgets every process, quantity and binding (not while the cycle thread runs). */
+int pdl_reset(void);
+
+struct pdl_stats {
+    uint32_t cycles;            /* cycles completed */
+    uint32_t process_runs;      /* process bodies run */
+    uint32_t commits;           /* quantities committed (with contributions) */
+    uint32_t overruns;          /* releases missed because a cycle ran late */
+    uint32_t overrun_events;    /* cycles that overran */
+    uint32_t max_cycle_ticks;   /* longest cycle in kernel ticks (board) */
+    uint32_t misuse;            /* refused calls */
+    uint32_t driver_errors;     /* actuator writes a driver refused */
+    int last_driver_code;       /* the driver's code of the last refused write */
+    int last_error;             /* the last refused call's code (0 = none) */
+};
+void pdl_get_stats(struct pdl_stats *out);
+/* Human-readable name of a PDL_ERR_* code. */
+const char *pdl_strerror(int code);
+
+/* ---- binding quantities to the board's ports (pdl_bind.c) ----
+ * Sensor ports (read at the start of each cycle, from the drivers' sampler
+ * snapshot on the board):
+ *   PDL_ANALOG_IN  0..23  8-bit analog inputs AIN0-23 (0..255)
+ *   PDL_BINARY_IN  1..5   DUART inputs IP1-IP5 (0/1)
+ *   PDL_BIO_IN     0..15  binary I/O lines BIO0-15 read as inputs (0/1)
+ * Actuator ports (written at the end of each cycle when the value changed):
+ *   PDL_MOTOR      0..2   motor set-point, permille -1000..1000 (open loop)
+ *   PDL_ANALOG_OUT 0..5   analog outputs AOUT0-5 (0..255)
+ *   PDL_BIO_OUT    0..15  binary I/O lines (0/1)
+ *   PDL_FAST_OUT   0..15  fast binary outputs (0/1)
+ *   PDL_PWM        0..15  TPU channel PWM duty, permille 0..1000 (PDL_PWM_HZ)
+ *   PDL_LED        0      the board LED (0 off, else on)
+ * A value outside a port's range is clipped to it when written. */
+enum pdl_port {
+    PDL_ANALOG_IN = 1, PDL_BINARY_IN, PDL_BIO_IN,
+    PDL_MOTOR, PDL_ANALOG_OUT, PDL_BIO_OUT, PDL_FAST_OUT, PDL_PWM, PDL_LED,
+    PDL_PORT_END
+};
+#ifndef PDL_PWM_HZ
+#define PDL_PWM_HZ 1000u
+#endif
+int pdl_bind_sensor(struct pdl_sensor *q, enum pdl_port port, unsigned index);
+int pdl_bind_actuator(struct pdl_quantity *q, enum pdl_port port, unsigned index);
+/* One line of a binding table (pdl_bind_table binds them all). */
+struct pdl_binding {
+    struct pdl_head *q;  /* &sensor.head or &quantity.head */
+    enum pdl_port port;
+    unsigned index;
+};
+int pdl_bind_table(const struct pdl_binding *table, size_t count);
+
+/* ---- fixed-point help for integer quantities ---- */
+/* a * b / 2^shift, rounded toward minus infinity, without overflow. */
+static inline int32_t pdl_mul_shift(int32_t a, int32_t b, unsigned shift)
+{
+    return (int32_t)(((int64_t)a * b) >> shift);
+}
+
+#endif /* PDL_H */

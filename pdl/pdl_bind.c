@@ -1,0 +1,206 @@
+/*
+ * Binding table: which quantity is which port of the board. A program binds
+ * a quantity to a port in one line (pdl_bind_sensor / pdl_bind_actuator, or
+ * a whole pdl_binding table); every cycle the runtime copies the board's
+ * inputs into the sensor quantities (from one snapshot, so all sensors of a
+ * cycle are from the same instant) and writes each actuator quantity whose
+ * value changed to its driver (writes over I2C cost ~0.3 ms each, so
+ * unchanged values are not rewritten). An input the drivers failed to read
+ * (the snapshot's valid bits) leaves its sensor quantities unchanged.
+ *
+ * The ports themselves are the platform's (pdl_board.c: the drivers;
+ * host/pdl_host.c: arrays a test or a simulator fills and reads).
+ */
+#include "pdl/pdl_internal.h"
+
+/* Index range, direction and value range of every port. */
+struct pdl_port_info {
+    uint8_t first, last;
+    uint8_t output;
+    int32_t lo, hi;
+};
+
+static const struct pdl_port_info pdl_port_table[PDL_PORT_END] = {
+    [PDL_ANALOG_IN]  = {0, 23, 0, 0, 255},
+    [PDL_BINARY_IN]  = {1, 5, 0, 0, 1},
+    [PDL_BIO_IN]     = {0, 15, 0, 0, 1},
+    [PDL_MOTOR]      = {0, 2, 1, -1000, 1000},
+    [PDL_ANALOG_OUT] = {0, 5, 1, 0, 255},
+    [PDL_BIO_OUT]    = {0, 15, 1, 0, 1},
+    [PDL_FAST_OUT]   = {0, 15, 1, 0, 1},
+    [PDL_PWM]        = {0, 15, 1, 0, 1000},
+    [PDL_LED]        = {0, 0, 1, 0, 1},
+};
+
+struct pdl_bound {
+    struct pdl_head *q;
+    uint8_t port;       /* enum pdl_port */
+    uint8_t index;
+    uint8_t written_valid;
+    uint8_t failed;     /* a driver refused a write (reported once) */
+    int32_t written;    /* last value written (actuators) */
+};
+
+static struct pdl_bound pdl_bindings[PDL_MAX_BINDINGS];
+static unsigned pdl_nbindings;
+static unsigned pdl_nsensor_bindings;
+
+int pdl_port_check(enum pdl_port port, unsigned index, int output)
+{
+    const struct pdl_port_info *p;
+    if ((int)port <= 0 || port >= PDL_PORT_END)
+        return PDL_ERR_PORT;
+    p = &pdl_port_table[port];
+    if (index < p->first || index > p->last || (int)p->output != (output != 0))
+        return PDL_ERR_PORT;
+    return PDL_OK;
+}
+
+void pdl_bind_reset(void)
+{
+    pdl_nbindings = 0;
+    pdl_nsensor_bindings = 0;
+}
+
+static int pdl_is_declared(const struct pdl_head *h, enum pdl_kind kind)
+{
+    return h->id != 0u && h->kind == (uint8_t)kind;
+}
+
+static int pdl_bind(struct pdl_head *h, enum pdl_port port, unsigned index, int output,
+                    const char *fn)
+{
+    unsigned i;
+    if (h == NULL)
+        return pdl_refuse(PDL_ERR_NULL, fn);
+    if (pdl_core_started())
+        return pdl_refuse(PDL_ERR_RUNNING, fn);
+    if (!pdl_is_declared(h, output ? PDL_KIND_INT : PDL_KIND_SENSOR))
+        return pdl_refuse(PDL_ERR_UNDECLARED, fn);
+    if (pdl_port_check(port, index, output) != PDL_OK)
+        return pdl_refuse(PDL_ERR_PORT, fn);
+    for (i = 0; i < pdl_nbindings; i++) {
+        const struct pdl_bound *b = &pdl_bindings[i];
+        if (!output && b->q == h)
+            return pdl_refuse(PDL_ERR_TWICE, fn);   /* a sensor has one source */
+        if (output && b->port == (uint8_t)port && b->index == index)
+            return pdl_refuse(PDL_ERR_PORT_TAKEN, fn);
+    }
+    if (pdl_nbindings >= PDL_MAX_BINDINGS)
+        return pdl_refuse(PDL_ERR_TOO_MANY_BINDINGS, fn);
+    /* sensors first, so the refresh walks a prefix of the table */
+    if (!output) {
+        pdl_bindings[pdl_nbindings] = pdl_bindings[pdl_nsensor_bindings];
+        i = pdl_nsensor_bindings++;
+    } else {
+        i = pdl_nbindings;
+    }
+    pdl_nbindings++;
+    pdl_bindings[i] = (struct pdl_bound){.q = h, .port = (uint8_t)port, .index = (uint8_t)index};
+    return PDL_OK;
+}
+
+int pdl_bind_sensor(struct pdl_sensor *q, enum pdl_port port, unsigned index)
+{
+    return pdl_bind(q == NULL ? NULL : &q->head, port, index, 0, "pdl_bind_sensor");
+}
+
+int pdl_bind_actuator(struct pdl_quantity *q, enum pdl_port port, unsigned index)
+{
+    return pdl_bind(q == NULL ? NULL : &q->head, port, index, 1, "pdl_bind_actuator");
+}
+
+int pdl_bind_table(const struct pdl_binding *table, size_t count)
+{
+    size_t i;
+    if (table == NULL)
+        return pdl_refuse(PDL_ERR_NULL, "pdl_bind_table");
+    for (i = 0; i < count; i++) {
+        struct pdl_head *h = table[i].q;
+        int r;
+        if (h != NULL && h->kind == PDL_KIND_SENSOR)
+            r = pdl_bind(h, table[i].port, table[i].index, 0, "pdl_bind_table");
+        else if (h != NULL && h->kind == PDL_KIND_INT)
+            r = pdl_bind(h, table[i].port, table[i].index, 1, "pdl_bind_table");
+        else
+            r = pdl_refuse(h == NULL ? PDL_ERR_NULL : PDL_ERR_UNDECLARED, "pdl_bind_table");
+        if (r != PDL_OK)
+            return r;
+    }
+    return PDL_OK;
+}
+
+int pdl_bind_uses(enum pdl_port port)
+{
+    unsigned i;
+    for (i = 0; i < pdl_nbindings; i++)
+        if (pdl_bindings[i].port == (uint8_t)port)
+            return 1;
+    return 0;
+}
+
+static int32_t pdl_clip(int32_t v, int32_t lo, int32_t hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+static uint32_t pdl_valid_bit(uint8_t port, uint8_t index)
+{
+    switch (port) {
+    case PDL_ANALOG_IN: return 1ul << index;
+    case PDL_BINARY_IN: return PDL_VALID_BININ;
+    default:            return index < 8u ? PDL_VALID_BIO0 : PDL_VALID_BIO1;
+    }
+}
+
+static int32_t pdl_input_of(const struct pdl_inputs *in, uint8_t port, uint8_t index)
+{
+    switch (port) {
+    case PDL_ANALOG_IN: return in->analog[index];
+    case PDL_BINARY_IN: return (in->binin >> index) & 1;
+    default:            return (in->bio >> index) & 1;      /* PDL_BIO_IN */
+    }
+}
+
+void pdl_bind_refresh_sensors(void)
+{
+    struct pdl_inputs in;
+    unsigned i;
+    if (pdl_nsensor_bindings == 0u)
+        return;
+    pdl_platform_read_inputs(&in);
+    for (i = 0; i < pdl_nsensor_bindings; i++) {
+        const struct pdl_bound *b = &pdl_bindings[i];
+        struct pdl_sensor *s = (struct pdl_sensor *)(void *)b->q;
+        /* a value the drivers could not read keeps the sensor's last value */
+        if (in.valid & pdl_valid_bit(b->port, b->index))
+            s->cur = pdl_clip(pdl_input_of(&in, b->port, b->index), s->min, s->max);
+    }
+}
+
+void pdl_bind_write_actuators(int force)
+{
+    unsigned i;
+    for (i = pdl_nsensor_bindings; i < pdl_nbindings; i++) {
+        struct pdl_bound *b = &pdl_bindings[i];
+        const struct pdl_port_info *p = &pdl_port_table[b->port];
+        int32_t v = pdl_clip(((const struct pdl_quantity *)(void *)b->q)->cur, p->lo, p->hi);
+        int r;
+        if (!force && b->written_valid && v == b->written)
+            continue;
+        r = pdl_platform_write((enum pdl_port)b->port, b->index, v);
+        if (r < 0) {
+            pdl_stats.driver_errors++;
+            if (!b->failed) {
+                b->failed = 1;
+                pdl_stats.last_error = PDL_ERR_DRIVER;
+                pdl_stats.last_driver_code = r;
+                pdl_platform_report(PDL_ERR_DRIVER, "actuator write (first failure of this output)");
+            }
+            b->written_valid = 0;   /* try again next cycle */
+            continue;
+        }
+        b->written = v;
+        b->written_valid = 1;
+    }
+}

@@ -1,0 +1,323 @@
+/*
+ * Board platform of the PDL runtime: run_pdl() starts the cycle thread on
+ * the nanokernel (the kernel's B-scheduler thread, kernel/k_bsched.c, with
+ * PDL's work before and after each minor cycle), the ports are the drivers.
+ *
+ * The kernel thread runs a one-process B-schedule (pv 0: every minor cycle)
+ * whose process is the whole PDL cycle; the PDL processes' own schedule is
+ * pdl_core's (bsched.c's plan of the PDL set).
+ *
+ * A cycle: read the sensors from the sampler's latest snapshot (no bus
+ * access in the cycle), run the due processes, commit, write the changed
+ * actuators. The cycle period is a whole number of kernel ticks (f0 =
+ * K_TICK_HZ / period; 1 tick = 1024 Hz at the default tick). Overruns are
+ * counted by the kernel thread and reported on the console by its reporter
+ * thread; pdl_get_stats() returns them.
+ *
+ * The drivers come from the `drivers` and `motion` branches
+ * (/work/briefs/driver-api.md). A port whose driver is not in the tree is
+ * refused when run_pdl() starts (PDL_ERR_DRIVER, reported), so an image
+ * without it still builds and runs programs that do not use that port.
+ */
+#include "pdl/pdl_internal.h"
+
+#include "bsched.h"
+#include "kernel.h"
+#include "k_bsched.h"
+#include "drivers/led.h"
+#include "pdl/pdl_board.h"
+
+#if defined(__has_include)
+#if __has_include("drivers/sampler.h")
+#include "drivers/sampler.h"
+#include "drivers/board_io.h"
+#define PDL_HAVE_SAMPLER 1
+#endif
+#if __has_include("drivers/motor.h")
+#include "drivers/motor.h"
+#define PDL_HAVE_MOTOR 1
+#endif
+#if __has_include("drivers/analog.h")
+#include "drivers/analog.h"
+#define PDL_HAVE_ANALOG 1
+#endif
+#if __has_include("drivers/bio.h")
+#include "drivers/bio.h"
+#define PDL_HAVE_BIO 1
+#endif
+#if __has_include("drivers/fastout.h")
+#include "drivers/fastout.h"
+#define PDL_HAVE_FASTOUT 1
+#endif
+#if __has_include("drivers/tpu.h")
+#include "drivers/tpu.h"
+#define PDL_HAVE_TPU 1
+#endif
+#endif
+
+#ifndef PDL_STACK_BYTES
+#define PDL_STACK_BYTES 2048u
+#endif
+/* Sampler period when run_pdl starts it (ms): a full sweep of the I/O board
+ * takes 6 ms (drivers/README.md), so sensors are at most ~16 ms old. */
+#ifndef PDL_SAMPLER_MS
+#define PDL_SAMPLER_MS 10u
+#endif
+
+static struct k_bsched pdl_thread;
+K_STACK_DEFINE(pdl_stack, PDL_STACK_BYTES);
+static k_ticks_t pdl_period_ticks = (K_TICK_HZ + PDL_DEFAULT_HZ / 2u) / PDL_DEFAULT_HZ;
+static int pdl_thread_started;
+
+void pdl_platform_report(int code, const char *what)
+{
+    if (code == PDL_ERR_DRIVER)
+        k_printf("pdl: %s: %s (driver code %d)\n", what, pdl_strerror(code),
+                 pdl_stats.last_driver_code);
+    else
+        k_printf("pdl: %s: %s (%d)\n", what, pdl_strerror(code), code);
+}
+
+int pdl_running(void) { return pdl_core_started(); }
+
+static uint32_t pdl_ticks_to_us(k_ticks_t t)
+{
+    return (t / K_TICK_HZ) * 1000000u + (t % K_TICK_HZ) * 1000000u / K_TICK_HZ;
+}
+
+/* ---- ports ---- */
+void pdl_platform_read_inputs(struct pdl_inputs *in)
+{
+#ifdef PDL_HAVE_SAMPLER
+    struct sensor_snapshot snap;
+    unsigned i;
+    sampler_read(&snap);
+    for (i = 0; i < 24u; i++)
+        in->analog[i] = snap.analog[i];
+    in->bio = snap.bio;
+    in->binin = (uint8_t)(snap.binin << 1);     /* the sampler has IP1 in bit 0 */
+    in->valid = snap.seq == 0u ? 0u : snap.valid;
+#else
+    *in = (struct pdl_inputs){{0}, 0, 0, 0};   /* refused at run_pdl: never reached */
+#endif
+}
+
+int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v)
+{
+    (void)index;    /* unused when no indexed driver is in the image */
+    switch (port) {
+#ifdef PDL_HAVE_MOTOR
+    case PDL_MOTOR: return motor_set(index, (int)v);
+#endif
+#ifdef PDL_HAVE_ANALOG
+    case PDL_ANALOG_OUT: return analog_write(index, (int)v);
+#endif
+#ifdef PDL_HAVE_BIO
+    case PDL_BIO_OUT: return bio_write(index, (int)v);
+#endif
+#ifdef PDL_HAVE_FASTOUT
+    case PDL_FAST_OUT: return fastout_write(index, (int)v);
+#endif
+#ifdef PDL_HAVE_TPU
+    case PDL_PWM: return tpu_pwm(index, PDL_PWM_HZ, (int)v);
+#endif
+    case PDL_LED:
+        led_set(v != 0);
+        return 0;
+    default:
+        return PDL_ERR_DRIVER;
+    }
+}
+
+/* Is the driver of `port` in this image? */
+static int pdl_port_available(enum pdl_port port)
+{
+    switch (port) {
+#ifdef PDL_HAVE_SAMPLER
+    case PDL_ANALOG_IN: case PDL_BINARY_IN: case PDL_BIO_IN: return 1;
+#endif
+#ifdef PDL_HAVE_MOTOR
+    case PDL_MOTOR: return 1;
+#endif
+#ifdef PDL_HAVE_ANALOG
+    case PDL_ANALOG_OUT: return 1;
+#endif
+#ifdef PDL_HAVE_BIO
+    case PDL_BIO_OUT: return 1;
+#endif
+#ifdef PDL_HAVE_FASTOUT
+    case PDL_FAST_OUT: return 1;
+#endif
+#ifdef PDL_HAVE_TPU
+    case PDL_PWM: return 1;
+#endif
+    case PDL_LED: return 1;
+    default: return 0;
+    }
+}
+
+static int pdl_driver_failed(int code, const char *what)
+{
+    pdl_stats.last_driver_code = code;
+    return pdl_refuse(PDL_ERR_DRIVER, what);
+}
+
+/* Brings up the drivers the bindings use, each once per boot: the I/O board
+ * (board_io_init) for analog/binary ports, the sampler for inputs, the
+ * motors, the TPU for PWM. */
+int pdl_platform_start_ports(void)
+{
+    static int io_up, sampler_up, motors_up, tpu_up;
+    int p, r;
+    for (p = PDL_ANALOG_IN; p < PDL_PORT_END; p++) {
+        if (pdl_bind_uses((enum pdl_port)p) && !pdl_port_available((enum pdl_port)p))
+            return pdl_driver_failed(0, "run_pdl: a bound port's driver is not in this image");
+    }
+    r = 0;
+#ifdef PDL_HAVE_SAMPLER
+    if (!io_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
+                   pdl_bind_uses(PDL_BIO_IN) || pdl_bind_uses(PDL_ANALOG_OUT) ||
+                   pdl_bind_uses(PDL_BIO_OUT) || pdl_bind_uses(PDL_FAST_OUT))) {
+        r = board_io_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: board_io_init");
+        io_up = 1;
+    }
+    if (!sampler_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
+                        pdl_bind_uses(PDL_BIO_IN))) {
+        r = sampler_start(PDL_SAMPLER_MS);
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: sampler_start");
+        sampler_up = 1;
+    }
+#endif
+#ifdef PDL_HAVE_MOTOR
+    if (!motors_up && pdl_bind_uses(PDL_MOTOR)) {
+        r = motor_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: motor_init");
+        motors_up = 1;
+    }
+#endif
+#ifdef PDL_HAVE_TPU
+    if (!tpu_up && pdl_bind_uses(PDL_PWM)) {
+        r = tpu_init();
+        if (r < 0)
+            return pdl_driver_failed(r, "run_pdl: tpu_init");
+        tpu_up = 1;
+    }
+#endif
+    (void)io_up;
+    (void)sampler_up;
+    (void)motors_up;
+    (void)tpu_up;
+    return PDL_OK;
+}
+
+/* ---- the cycle thread ---- */
+static struct bsched pdl_outer;
+static const uint8_t pdl_outer_pv[1] = {0};
+
+/* The one process of the kernel thread's schedule: a whole PDL cycle. */
+static void pdl_board_cycle(void *context, uint16_t index)
+{
+    (void)context;
+    (void)index;
+    pdl_cycle_begin(pdl_ticks_to_us(k_ticks()));
+    (void)pdl_cycle_run();
+    pdl_cycle_end();
+}
+
+int pdl_set_frequency(uint32_t hz)
+{
+    uint32_t ticks;
+    if (pdl_core_started())
+        return pdl_refuse(PDL_ERR_RUNNING, "pdl_set_frequency");
+    if (hz == 0u || hz > K_TICK_HZ)
+        return pdl_refuse(PDL_ERR_FREQUENCY, "pdl_set_frequency (1 .. kernel tick rate)");
+    ticks = (K_TICK_HZ + hz / 2u) / hz;
+    pdl_period_ticks = ticks;
+    pdl_core_period_us = pdl_ticks_to_us(ticks);
+    return PDL_OK;
+}
+
+uint32_t pdl_frequency_mhz(void)
+{
+    return K_TICK_HZ * 1000u / pdl_period_ticks;
+}
+
+int run_pdl(void)
+{
+    int r;
+    if (pdl_thread_started)
+        return pdl_refuse(PDL_ERR_RUNNING, "run_pdl");
+    pdl_core_period_us = pdl_ticks_to_us(pdl_period_ticks);
+    r = pdl_core_plan();
+    if (r != PDL_OK)
+        return r;
+    r = pdl_platform_start_ports();
+    if (r != PDL_OK)
+        return r;
+    pdl_core_set_started(1);
+    pdl_bind_write_actuators(1);    /* the initial values */
+    pdl_thread.stop_after = 0;
+    /* Start at the beginning of a tick: creating the thread fills its stack
+     * (a few thousand instructions), and k_bsched_start releases the first
+     * cycle at the next tick, which must not already be past. */
+    if (!k_in_isr())
+        (void)k_sleep_ticks(1);
+    r = (int)bsched_init(&pdl_outer, pdl_outer_pv, 1);
+    if (r == BSCHED_OK)
+        r = k_bsched_start(&pdl_thread, &pdl_outer, pdl_board_cycle, NULL,
+                           pdl_period_ticks, pdl_stack, sizeof pdl_stack);
+    if (r != K_OK) {
+        pdl_core_set_started(0);
+        return pdl_refuse(PDL_ERR_KERNEL, "run_pdl (k_bsched_start)");
+    }
+    pdl_thread_started = 1;
+    return PDL_OK;
+}
+
+int pdl_stop(uint32_t timeout_ms)
+{
+    int r;
+    if (!pdl_thread_started)
+        return pdl_refuse(PDL_ERR_NOT_RUNNING, "pdl_stop");
+    pdl_thread.stop = 1;
+    r = k_thread_join(&pdl_thread.thread, NULL, k_ms_to_ticks(timeout_ms));
+    if (r != K_OK)
+        return pdl_refuse(PDL_ERR_KERNEL, "pdl_stop (the cycle thread did not end in time)");
+    pdl_thread_started = 0;
+    pdl_core_set_started(0);
+    return PDL_OK;
+}
+
+int pdl_reset(void)
+{
+    if (pdl_thread_started)
+        return pdl_refuse(PDL_ERR_RUNNING, "pdl_reset");
+    pdl_core_reset();
+    pdl_period_ticks = (K_TICK_HZ + PDL_DEFAULT_HZ / 2u) / PDL_DEFAULT_HZ;
+    return PDL_OK;
+}
+
+void pdl_platform_stats(struct pdl_stats *out)
+{
+    out->overruns = pdl_thread.overruns;
+    out->overrun_events = pdl_thread.overrun_events;
+    out->max_cycle_ticks = pdl_thread.max_cycle_ticks;
+}
+
+uint32_t pdl_stack_used(void)
+{
+    unsigned i, n = sizeof pdl_stack / sizeof pdl_stack[0];
+    /* k_thread_create fills the whole stack with K_STACK_GUARD: the first
+     * word that differs is the deepest the thread has been */
+    for (i = K_STACK_GUARD_WORDS; i < n && pdl_stack[i] == K_STACK_GUARD; i++)
+        ;
+    return (n - i) * 4u;
+}
+
+uint32_t pdl_stack_size(void) { return sizeof pdl_stack; }
+
+struct k_thread *pdl_cycle_thread(void) { return &pdl_thread.thread; }
