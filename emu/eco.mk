@@ -21,12 +21,13 @@ ALL    += $(ECO_HOST_LIB)
 .PHONY: eco-host check-eco eco-survival
 eco-host: $(ECO_HOST_LIB)
 
-# The behaviour program and the unchanged bsched.c, for the host (ctypes).
+# The PDL program on the PDL host runtime (pdl/pdl.mk's PDL_HOST_SRCS: the
+# same pdl_core.c and bsched.c as on the board), for the host (ctypes).
 $(ECO_HOST_LIB): emu/world/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
-                 bsched/bsched.c bsched/bsched.h
+                 $(PDL_HOST_SRCS) pdl/pdl.h pdl/host/pdl_host.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -Ibsched -Iapps/ecosystem -o $@ \
-	    emu/world/host/eco_host.c apps/ecosystem/eco_program.c bsched/bsched.c
+	$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
+	    emu/world/host/eco_host.c apps/ecosystem/eco_program.c $(PDL_HOST_SRCS)
 
 ECO_TEST_ENV = BSCHED_QEMU=$(QEMU_M68K) ECO_ELF=$(ECO_ELF) ECO_HOST_LIB=$(ECO_HOST_LIB)
 

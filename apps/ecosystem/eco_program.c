@@ -1,20 +1,28 @@
 /*
- * The ecosystem robot's behaviours (see eco_program.h). Integer arithmetic
- * only (the CPU32 has no FPU). Conventions: speed and turn in permille of
- * full motor duty; turn > 0 is counter-clockwise (the right wheel faster).
- * Every process reads only values of the previous cycle and adds to
- * quantities, so the order in which the B-scheduler runs them is irrelevant.
+ * The ecosystem robot's behaviours, a PDL program (see eco_program.h).
+ * Integer quantities only (the CPU32 has no FPU). Conventions: speed and
+ * turn in permille of full motor duty; turn > 0 is counter-clockwise (the
+ * right wheel faster). Every process reads only values of the previous
+ * cycle and adds to quantities, so the order in which the B-scheduler runs
+ * them is irrelevant. Process-private state lives in statics.
  */
 #include "eco_program.h"
+
+struct pdl_sensor light_l, light_r, ir_l, ir_r, battery, comp_l, comp_r;
+struct pdl_sensor bump_l, bump_r, charger;
+struct pdl_quantity speed, turn, hunger, motor_l, motor_r;
+int32_t eco_contrib[ECO_PROCS][2];
+uint32_t eco_last_cycle[ECO_PROCS];
 
 /* Priority values (the process runs every 2^pv cycles). */
 const uint8_t eco_pv[ECO_PROCS] = {
     [ECO_BUMP] = 0, [ECO_AVOID] = 0, [ECO_CRUISE] = 1, [ECO_PHOTO] = 1,
     [ECO_DOCK] = 1, [ECO_WANDER] = 2, [ECO_COMPETE] = 2, [ECO_BATTERY] = 4,
+    [ECO_MOTORS] = 0,
 };
 
 const char *const eco_names[ECO_PROCS] = {
-    "bump", "avoid", "cruise", "photo", "dock", "wander", "compete", "battery",
+    "bump", "avoid", "cruise", "photo", "dock", "wander", "compete", "battery", "motors",
 };
 
 /* Tuning (codes are the world's 8-bit sensor codes). */
@@ -38,19 +46,26 @@ const char *const eco_names[ECO_PROCS] = {
 #define BAT_FED_CHARGING  216   /* ~8.45 V with the charge boost: ~95 % */
 #define BAT_FED           212
 
-static void add(struct eco_program *p, enum eco_process who, struct eco_quantity *q, int32_t v)
-{
-    q->next += v;
-    if (q == &p->speed) {
-        p->contrib[who][0] += v;
-    } else if (q == &p->turn) {
-        p->contrib[who][1] += v;
-    }
-}
+/* add_value plus the record of what the process contributed (live view). */
+#define ADD(who, q, e)                                      \
+    do {                                                    \
+        int32_t add_v_ = (int32_t)(e);                      \
+        add_value(q, add_v_);                               \
+        if (&(q) == &speed) {                               \
+            eco_contrib[who][0] += add_v_;                  \
+        } else if (&(q) == &turn) {                         \
+            eco_contrib[who][1] += add_v_;                  \
+        }                                                   \
+    } while (0)
 
-static int32_t clip(int32_t v, int32_t lo, int32_t hi)
+/* Start of every process body: its contribution record and cycle. */
+static void ran(enum eco_process who)
 {
-    return v < lo ? lo : v > hi ? hi : v;
+    struct pdl_stats st;
+    pdl_get_stats(&st);
+    eco_last_cycle[who] = st.cycles;
+    eco_contrib[who][0] = 0;
+    eco_contrib[who][1] = 0;
 }
 
 static int32_t pos(int32_t v)
@@ -58,176 +73,226 @@ static int32_t pos(int32_t v)
     return v > 0 ? v : 0;
 }
 
-static uint32_t rng_next(struct eco_program *p)
+static uint32_t rng_state = 0x2545F491u;
+
+static uint32_t rng_next(void)
 {
-    uint32_t x = p->rng;           /* xorshift32 */
+    uint32_t x = rng_state;        /* xorshift32 */
     x ^= x << 13;
     x ^= x >> 17;
     x ^= x << 5;
-    return p->rng = x;
+    return rng_state = x;
 }
 
-static int hungry(const struct eco_program *p)
+static int hungry(void)
 {
-    return p->hunger.value > 500;
+    return value(hunger) > 500;
 }
 
-static void bump(struct eco_program *p)
+static int charging(void)
 {
-    if (p->escape_cycles == 0 && (p->in.bump_l || p->in.bump_r)) {
-        p->escape_cycles = ESCAPE_CYCLES;
-        p->escape_turn = p->in.bump_l ? -ESCAPE_TURN : ESCAPE_TURN;
+    return value(charger) == 0;
+}
+
+/* Shared by bump and dock (the escape or leave manoeuvre under way). */
+static int32_t escape_cycles, escape_turn;
+/* avoid: -1 right, +1 left, 0 nothing in view. */
+static int32_t avoid_dir;
+/* battery: running mean of the battery code, x16. */
+static int32_t battery_avg;
+
+static void bump(void)
+{
+    ran(ECO_BUMP);
+    if (escape_cycles == 0 && ((value(bump_l) == 0) || (value(bump_r) == 0))) {
+        escape_cycles = ESCAPE_CYCLES;
+        escape_turn = (value(bump_l) == 0) ? -ESCAPE_TURN : ESCAPE_TURN;
     }
-    if (p->escape_cycles > 0 && p->escape_turn != LEAVE_TURN) {
-        p->escape_cycles--;
-        add(p, ECO_BUMP, &p->speed, ESCAPE_SPEED - p->speed.value);
-        add(p, ECO_BUMP, &p->turn, p->escape_turn - p->turn.value);
+    if (escape_cycles > 0 && escape_turn != LEAVE_TURN) {
+        escape_cycles--;
+        ADD(ECO_BUMP, speed, ESCAPE_SPEED - value(speed));
+        ADD(ECO_BUMP, turn, escape_turn - value(turn));
     }
 }
 
-static void avoid(struct eco_program *p)
+static void avoid(void)
 {
+    ran(ECO_AVOID);
     int32_t threshold = IR_THRESHOLD, el, er;
 
-    if (hungry(p) && p->in.charging) {
+    if (hungry() && charging()) {
         return;                     /* docked: walls near the station are fine */
     }
-    if (!hungry(p) && p->in.comp_l + p->in.comp_r > COMPETE_NEAR) {
+    if (!hungry() && value(comp_l) + value(comp_r) > COMPETE_NEAR) {
         threshold += 60;            /* let the robot reach the competitor */
     }
-    el = pos(p->in.ir_l - threshold);
-    er = pos(p->in.ir_r - threshold);
+    el = pos(value(ir_l) - threshold);
+    er = pos(value(ir_r) - threshold);
     if (el == 0 && er == 0) {
-        p->avoid_dir = 0;
+        avoid_dir = 0;
         return;
     }
     /* Keep turning the way we started while anything is in view, so that a
      * corner (both sides seeing a wall in turn) does not make us dither. */
-    if (p->avoid_dir == 0) {
-        p->avoid_dir = el >= er ? -1 : 1;
+    if (avoid_dir == 0) {
+        avoid_dir = el >= er ? -1 : 1;
     }
-    add(p, ECO_AVOID, &p->turn, p->avoid_dir * IR_TURN_GAIN * (el > er ? el : er));
-    add(p, ECO_AVOID, &p->speed, -IR_SPEED_GAIN * (el > er ? el : er));
+    ADD(ECO_AVOID, turn, avoid_dir * IR_TURN_GAIN * (el > er ? el : er));
+    ADD(ECO_AVOID, speed, -IR_SPEED_GAIN * (el > er ? el : er));
 }
 
-static void cruise(struct eco_program *p)
+static void cruise(void)
 {
+    ran(ECO_CRUISE);
     int32_t target = CRUISE_SPEED;
-    if (hungry(p) && p->in.charging) {
+    if (hungry() && charging()) {
         target = 0;                 /* docked */
-    } else if (hungry(p) && p->in.light_l + p->in.light_r > LIGHT_BRIGHT) {
+    } else if (hungry() && value(light_l) + value(light_r) > LIGHT_BRIGHT) {
         target = CREEP_SPEED;
     }
-    add(p, ECO_CRUISE, &p->speed, (target - p->speed.value) / 4);
-    add(p, ECO_CRUISE, &p->turn, -p->turn.value / 4);
+    ADD(ECO_CRUISE, speed, (target - value(speed)) / 4);
+    ADD(ECO_CRUISE, turn, -value(turn) / 4);
 }
 
-static void photo(struct eco_program *p)
+static void photo(void)
 {
-    int32_t sum = p->in.light_l + p->in.light_r;
-    if (!hungry(p) || p->in.charging) {
+    ran(ECO_PHOTO);
+    int32_t sum = value(light_l) + value(light_r);
+    if (!hungry() || charging()) {
         return;
     }
     /* Light out of sight (behind us or shadowed): no pull at all, so that
      * cruise and wander carry the robot on until it sees the light again (a
      * search turn here made it circle on the spot behind an obstacle). */
     if (sum >= LIGHT_DARK) {
-        add(p, ECO_PHOTO, &p->turn, LIGHT_TURN_GAIN * (p->in.light_l - p->in.light_r));
+        ADD(ECO_PHOTO, turn, LIGHT_TURN_GAIN * (value(light_l) - value(light_r)));
     }
 }
 
-static void dock(struct eco_program *p)
+static void dock(void)
 {
-    if (hungry(p) && p->in.charging) {
-        add(p, ECO_DOCK, &p->speed, -p->speed.value);
-        add(p, ECO_DOCK, &p->turn, -p->turn.value);
-        p->escape_cycles = LEAVE_CYCLES;   /* turn round when fed */
-        p->escape_turn = LEAVE_TURN;
-    } else if (!hungry(p) && p->escape_turn == LEAVE_TURN && p->escape_cycles > 0) {
-        p->escape_cycles -= 2;             /* pv 1: every other cycle */
-        if (p->escape_cycles <= 0) {
-            p->escape_cycles = 0;
-            p->escape_turn = 0;
+    ran(ECO_DOCK);
+    if (hungry() && charging()) {
+        ADD(ECO_DOCK, speed, -value(speed));
+        ADD(ECO_DOCK, turn, -value(turn));
+        escape_cycles = LEAVE_CYCLES;   /* turn round when fed */
+        escape_turn = LEAVE_TURN;
+    } else if (!hungry() && escape_turn == LEAVE_TURN && escape_cycles > 0) {
+        escape_cycles -= 2;             /* pv 1: every other cycle */
+        if (escape_cycles <= 0) {
+            escape_cycles = 0;
+            escape_turn = 0;
         }
-        add(p, ECO_DOCK, &p->speed, -p->speed.value);
-        add(p, ECO_DOCK, &p->turn, LEAVE_TURN - p->turn.value);
+        ADD(ECO_DOCK, speed, -value(speed));
+        ADD(ECO_DOCK, turn, LEAVE_TURN - value(turn));
     }
 }
 
-static void wander(struct eco_program *p)
+static void wander(void)
 {
-    int32_t kick = (int32_t)(rng_next(p) % (2u * WANDER_KICK + 1u)) - WANDER_KICK;
-    if (hungry(p) && p->in.charging) {
+    ran(ECO_WANDER);
+    int32_t kick = (int32_t)(rng_next() % (2u * WANDER_KICK + 1u)) - WANDER_KICK;
+    if (hungry() && charging()) {
         return;
     }
-    add(p, ECO_WANDER, &p->turn, kick / 2);
+    ADD(ECO_WANDER, turn, kick / 2);
 }
 
-static void compete(struct eco_program *p)
+static void compete(void)
 {
-    if (hungry(p)) {
+    ran(ECO_COMPETE);
+    if (hungry()) {
         return;
     }
-    add(p, ECO_COMPETE, &p->turn, COMPETE_GAIN * (p->in.comp_l - p->in.comp_r));
+    ADD(ECO_COMPETE, turn, COMPETE_GAIN * (value(comp_l) - value(comp_r)));
 }
 
-static void battery(struct eco_program *p)
+static void battery_monitor(void)
 {
+    ran(ECO_BATTERY);
     int32_t level;
-    p->battery_avg += (16 * p->in.battery - p->battery_avg) / 4;
-    level = p->battery_avg / 16;
+    battery_avg += (16 * value(battery) - battery_avg) / 4;
+    level = battery_avg / 16;
     if (level < BAT_HUNGRY) {
-        add(p, ECO_BATTERY, &p->hunger, 1000 - p->hunger.value);
-    } else if (level >= (p->in.charging ? BAT_FED_CHARGING : BAT_FED)) {
-        add(p, ECO_BATTERY, &p->hunger, -p->hunger.value);
+        ADD(ECO_BATTERY, hunger, 1000 - value(hunger));
+    } else if (level >= (charging() ? BAT_FED_CHARGING : BAT_FED)) {
+        ADD(ECO_BATTERY, hunger, -value(hunger));
     }
 }
 
-void eco_init(struct eco_program *p, uint32_t seed)
+static void motors(void)
 {
-    struct eco_program zero = {0};
-    *p = zero;
-    p->speed.min = -1000;
-    p->speed.max = 1000;
-    p->turn.min = -1000;
-    p->turn.max = 1000;
-    p->hunger.min = 0;
-    p->hunger.max = 1000;
-    p->rng = seed ? seed : 0x2545F491u;
-    p->battery_avg = 16 * 255;    /* full until measured */
+    ran(ECO_MOTORS);
+    add_value(motor_l, value(speed) - value(turn) - value(motor_l));
+    add_value(motor_r, value(speed) + value(turn) - value(motor_r));
 }
 
-void eco_begin_cycle(struct eco_program *p, const struct eco_inputs *in)
+uint32_t eco_ran_mask(uint32_t cycle)
 {
-    p->in = *in;
+    uint32_t mask = 0;
+    unsigned i;
+    for (i = 0; i < ECO_PROCS; i++) {
+        if (eco_last_cycle[i] == cycle) {
+            mask |= 1ul << i;
+        }
+    }
+    return mask;
 }
 
-void eco_run(struct eco_program *p, unsigned index)
+int eco_setup(uint32_t seed, int bind)
 {
-    static void (*const body[ECO_PROCS])(struct eco_program *) = {
+    static void (*const body[ECO_PROCS])(void) = {
         [ECO_BUMP] = bump, [ECO_AVOID] = avoid, [ECO_CRUISE] = cruise,
         [ECO_PHOTO] = photo, [ECO_DOCK] = dock, [ECO_WANDER] = wander,
-        [ECO_COMPETE] = compete, [ECO_BATTERY] = battery,
+        [ECO_COMPETE] = compete, [ECO_BATTERY] = battery_monitor, [ECO_MOTORS] = motors,
     };
-    if (index < ECO_PROCS) {
-        p->contrib[index][0] = 0;
-        p->contrib[index][1] = 0;
-        p->runs[index]++;
-        body[index](p);
+    const struct pdl_binding wiring[] = {
+        {&light_l.head, PDL_ANALOG_IN, 0}, {&light_r.head, PDL_ANALOG_IN, 1},
+        {&ir_l.head, PDL_ANALOG_IN, 2},    {&ir_r.head, PDL_ANALOG_IN, 3},
+        {&battery.head, PDL_ANALOG_IN, 4},
+        {&comp_l.head, PDL_ANALOG_IN, 5},  {&comp_r.head, PDL_ANALOG_IN, 6},
+        {&bump_l.head, PDL_BINARY_IN, 1},  {&bump_r.head, PDL_BINARY_IN, 2},
+        {&charger.head, PDL_BINARY_IN, 3},
+        {&motor_l.head, PDL_MOTOR, 0},     {&motor_r.head, PDL_MOTOR, 1},
+    };
+    struct pdl_sensor *analog[] = {&light_l, &light_r, &ir_l, &ir_r, &battery, &comp_l, &comp_r};
+    struct pdl_sensor *binary[] = {&bump_l, &bump_r, &charger};
+    unsigned i;
+    int r = PDL_OK;
+
+    rng_state = seed ? seed : 0x2545F491u;
+    escape_cycles = escape_turn = avoid_dir = 0;
+    battery_avg = 16 * 255;         /* full until measured */
+    for (i = 0; i < ECO_PROCS; i++) {
+        eco_contrib[i][0] = eco_contrib[i][1] = 0;
+        eco_last_cycle[i] = 0xFFFFFFFFu;
     }
-}
-
-static void commit(struct eco_quantity *q)
-{
-    q->value = clip(q->value + q->next, q->min, q->max);
-    q->next = 0;
-}
-
-void eco_end_cycle(struct eco_program *p)
-{
-    commit(&p->speed);
-    commit(&p->turn);
-    commit(&p->hunger);
-    p->motor_l = clip(p->speed.value - p->turn.value, -1000, 1000);
-    p->motor_r = clip(p->speed.value + p->turn.value, -1000, 1000);
+    for (i = 0; r == PDL_OK && i < sizeof analog / sizeof analog[0]; i++) {
+        r = add_sensor(analog[i], 0, 255);
+    }
+    for (i = 0; r == PDL_OK && i < sizeof binary / sizeof binary[0]; i++) {
+        r = add_sensor(binary[i], 0, 1);
+    }
+    if (r == PDL_OK) {
+        r = add_quantity(&speed, -1000, 1000, 0);
+    }
+    if (r == PDL_OK) {
+        r = add_quantity(&turn, -1000, 1000, 0);
+    }
+    if (r == PDL_OK) {
+        r = add_quantity(&hunger, 0, 1000, 0);
+    }
+    if (r == PDL_OK) {
+        r = add_quantity(&motor_l, -1000, 1000, 0);
+    }
+    if (r == PDL_OK) {
+        r = add_quantity(&motor_r, -1000, 1000, 0);
+    }
+    if (r == PDL_OK && bind) {
+        r = pdl_bind_table(wiring, sizeof wiring / sizeof wiring[0]);
+    }
+    for (i = 0; r >= 0 && i < ECO_PROCS; i++) {
+        r = add_process_pv(body[i], eco_pv[i]);
+    }
+    return r < 0 ? r : PDL_OK;
 }

@@ -1,20 +1,30 @@
 /*
- * The ecosystem robot's behaviour program, written in the style of PDL
- * (paper section 5): quantities with a current value (read by every process
- * of a cycle) and a next value (the sum of what the processes add), and
- * argumentless processes that only read values and add to quantities. The
- * behaviours combine by superposition, with no arbiter.
+ * The ecosystem robot's behaviour program, a PDL program (pdl/pdl.h, paper
+ * section 5): quantities with a value (the previous cycle's, the same for
+ * every process) and the sum of what processes add (committed and clipped
+ * at the end of the cycle); argumentless processes that only read values
+ * and add. The behaviours combine by superposition, with no arbiter.
  *
- * Host-portable C99 (no kernel, no drivers): the firmware (ecosystem.c) runs
- * the processes from the kernel's B-scheduler thread, and the host fast mode
- * (emu/world/host/eco_host.c) runs the very same file through the same
- * bsched.c on the host. Interim: when the pdl runtime lands, these become
- * PDL processes (add_process_pv, value, add_value) unchanged in substance.
+ * The same file runs on the emulated board (apps/ecosystem/ecosystem.c: the
+ * PDL runtime's cycle thread, the drivers' sampler and motor driver) and on
+ * the host (emu/world/host/eco_host.c: the PDL host runtime), against the
+ * same world.
+ *
+ * Wiring (as the world's arena file wires the robot):
+ *   light_l/r  analog in 0/1   station light, left/right (+-40 deg)
+ *   ir_l/r     analog in 2/3   infrared distance, larger = nearer
+ *   battery    analog in 4     battery voltage, 10 V full scale
+ *   comp_l/r   analog in 5/6   competitor lamps
+ *   bump_l/r   binary in 1/2   bumpers, 0 = pressed
+ *   charger    binary in 3     charger contact, 0 = charging
+ *   motor_l/r  motor 0/1       wheel set-points, permille, + = forward
  */
 #ifndef ECO_PROGRAM_H
 #define ECO_PROGRAM_H
 
 #include <stdint.h>
+
+#include "pdl/pdl.h"
 
 enum eco_process {
     ECO_BUMP,      /* bumper reflex: back off and turn away */
@@ -25,49 +35,28 @@ enum eco_process {
     ECO_WANDER,    /* random turns */
     ECO_COMPETE,   /* seek competitor lamps when fed (the ecosystem's work) */
     ECO_BATTERY,   /* battery monitor: sets the hunger motivation */
+    ECO_MOTORS,    /* speed and turn to the two wheel set-points */
     ECO_PROCS
 };
 
-/* Sensor values of one cycle (analog codes 0..255; flags 1 = active). */
-struct eco_inputs {
-    int32_t light_l, light_r;   /* station light */
-    int32_t ir_l, ir_r;         /* infrared distance: larger = nearer */
-    int32_t battery;            /* battery voltage code (10 V full scale) */
-    int32_t comp_l, comp_r;     /* competitor lamp light */
-    int32_t bump_l, bump_r, charging;
-};
-
-/* A PDL-style quantity: value (this cycle) and the sum of contributions. */
-struct eco_quantity {
-    int32_t value, next, min, max;
-};
-
-struct eco_program {
-    struct eco_inputs in;
-    struct eco_quantity speed;   /* forward, permille of full duty */
-    struct eco_quantity turn;    /* counter-clockwise, permille */
-    struct eco_quantity hunger;  /* 0 fed .. 1000 hungry */
-    int32_t motor_l, motor_r;    /* committed motor set-points, permille */
-    /* What each process added in its last run: speed, turn. */
-    int32_t contrib[ECO_PROCS][2];
-    uint32_t runs[ECO_PROCS];
-    /* Process-private state. */
-    int32_t escape_cycles, escape_turn;
-    int32_t avoid_dir;           /* -1 right, +1 left, 0 nothing in view */
-    int32_t battery_avg;         /* x16 */
-    uint32_t rng;
-};
+extern struct pdl_sensor light_l, light_r, ir_l, ir_r, battery, comp_l, comp_r;
+extern struct pdl_sensor bump_l, bump_r, charger;
+extern struct pdl_quantity speed, turn, hunger, motor_l, motor_r;
 
 extern const uint8_t eco_pv[ECO_PROCS];
 extern const char *const eco_names[ECO_PROCS];
 
-void eco_init(struct eco_program *p, uint32_t seed);
-/* Start of a cycle: the sensor quantities take their new values. */
-void eco_begin_cycle(struct eco_program *p, const struct eco_inputs *in);
-/* Runs process `index` (an enum eco_process). */
-void eco_run(struct eco_program *p, unsigned index);
-/* End of a cycle: every quantity takes value + sum of contributions,
- * clipped to its bounds; motor set-points from speed and turn. */
-void eco_end_cycle(struct eco_program *p);
+/* What the live view shows: each process's last contribution to speed and
+ * turn, and the PDL cycle in which it last ran. */
+extern int32_t eco_contrib[ECO_PROCS][2];
+extern uint32_t eco_last_cycle[ECO_PROCS];
+
+/* Declares the quantities, binds them to the ports above (bind != 0) and
+ * adds the processes, in enum order (process id = enum value). Before
+ * run_pdl(). PDL_OK or the first error. */
+int eco_setup(uint32_t seed, int bind);
+
+/* Bit mask of the processes that ran in PDL cycle `cycle` (0-based). */
+uint32_t eco_ran_mask(uint32_t cycle);
 
 #endif

@@ -56,6 +56,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(RoboCubeLockstep, ROBOCUBE_LOCKSTEP)
 struct RoboCubeLockstep {
     DeviceState parent_obj;
     uint64_t step_ns;          /* 0 = off */
+    uint64_t origin_ns;        /* boundaries at origin + k * step */
     uint64_t next_boundary;    /* virtual ns of the next stop */
     uint64_t boundary;         /* virtual ns of the last stop (0 before any) */
     uint64_t steps;            /* boundaries reached */
@@ -155,11 +156,26 @@ static void lockstep_get_now(Object *obj, Visitor *v, const char *name,
     visit_type_uint64(v, name, &now, errp);
 }
 
+/* The next boundary origin + k * step strictly after now (k may be < 0
+ * relative to a future origin). */
+static void lockstep_rebase(RoboCubeLockstep *ls)
+{
+    uint64_t now = (uint64_t)qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
+    uint64_t phase;
+
+    if (ls->step_ns) {
+        phase = ls->origin_ns % ls->step_ns;
+        ls->next_boundary = now < phase ? phase
+                          : ((now - phase) / ls->step_ns + 1) * ls->step_ns + phase;
+    }
+    lockstep_arm(ls);
+}
+
 static void lockstep_set_step(Object *obj, Visitor *v, const char *name,
                               void *opaque, Error **errp)
 {
     RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(obj);
-    uint64_t value, now;
+    uint64_t value;
 
     if (!visit_type_uint64(v, name, &value, errp)) {
         return;
@@ -169,13 +185,27 @@ static void lockstep_set_step(Object *obj, Visitor *v, const char *name,
                    value);
         return;
     }
-    now = (uint64_t)qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
     ls->step_ns = value;
-    if (value) {
-        /* Boundaries are absolute multiples of the step: the next one after now. */
-        ls->next_boundary = (now / value + 1) * value;
+    lockstep_rebase(ls);
+}
+
+static void lockstep_get_origin(Object *obj, Visitor *v, const char *name,
+                                void *opaque, Error **errp)
+{
+    visit_type_uint64(v, name, &ROBOCUBE_LOCKSTEP(obj)->origin_ns, errp);
+}
+
+static void lockstep_set_origin(Object *obj, Visitor *v, const char *name,
+                                void *opaque, Error **errp)
+{
+    RoboCubeLockstep *ls = ROBOCUBE_LOCKSTEP(obj);
+    uint64_t value;
+
+    if (!visit_type_uint64(v, name, &value, errp)) {
+        return;
     }
-    lockstep_arm(ls);
+    ls->origin_ns = value;
+    lockstep_rebase(ls);
 }
 
 /* Parses "PATH:PROP PATH:PROP ..." into objects and property names; every
@@ -442,6 +472,10 @@ static void lockstep_class_init(ObjectClass *oc, void *data)
     object_class_property_add(oc, "step-ns", "uint64", lockstep_get_step, lockstep_set_step, NULL, NULL);
     object_class_property_set_description(oc, "step-ns",
         "virtual ns between stops (0 = off); boundaries at k * step-ns");
+    object_class_property_add(oc, "origin-ns", "uint64", lockstep_get_origin,
+                              lockstep_set_origin, NULL, NULL);
+    object_class_property_set_description(oc, "origin-ns",
+        "boundaries at origin-ns + k * step-ns (default 0); the next one after now");
     object_class_property_add_str(oc, "sample-props", lockstep_get_sample_spec,
                                   lockstep_set_sample_spec);
     object_class_property_add_str(oc, "input-props", lockstep_get_input_spec,

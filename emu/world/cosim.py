@@ -25,13 +25,16 @@ from qmp_link import QMPLink, qom_get, qom_set
 IO = "/machine/robocube-io"
 LOCKSTEP = "/machine/lockstep"
 ICOUNT = "shift=8,sleep=off"
-# The step: one tick of the ecosystem firmware's 128 Hz kernel clock (two per
-# 64 Hz minor cycle). Steps of 10 ms would put boundaries at every phase of the
-# cycle, some within microseconds of the firmware's motor writes or sensor
-# reads, where the slightest difference in guest timing decides on which side
-# of the boundary a value falls (seen: one run in five differing by a cycle).
-# Aligned with the tick, every boundary keeps the same, wide distance (the
-# tick's phase) from the firmware's reads and writes.
+# The step: one tick of the ecosystem firmware's 128 Hz kernel clock, and the
+# boundaries placed TICK_LEAD_NS before each tick once the firmware has
+# started its PIT (the lockstep device's origin-ns). Between a tick and the
+# next boundary the firmware does all its I/O: the PDL cycle (snapshot in,
+# motor writes out) right after the tick and the sampler's sweep of the
+# converters (6.0 ms, drivers/README.md). So no read or write of the firmware
+# comes near a boundary, and the slightest difference in guest timing cannot
+# decide on which side of a boundary a value falls. (With boundaries at an
+# arbitrary phase, some fell within microseconds of a motor write.)
+TICK_LEAD_NS = 1_000_000
 STEP_NS = 7_812_500
 FRAME_TIMEOUT_S = 60.0
 ANALOG = ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
@@ -154,6 +157,7 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step
     sample = [f"{LOCKSTEP}:boundary-ns"]
     for m in (ml, mr):
         sample += [f"{IO}/motor{m}:duty", f"{IO}/motor{m}:direction"]
+    sample += ["/machine/sim:pit-start-ns", "/machine/sim:pit-period-ns"]
     inputs = [f"{IO}:ain{wiring['ain_' + k]}" for k in
               ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
                "comp_right")] + ["/machine/duart:input-port", f"{IO}/motor{ml}:encoder",
@@ -170,21 +174,33 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step
         q.execute("qom-set", {"path": LOCKSTEP, "property": "inputs",
                               "value": [codes[k] for k in ANALOG] + [input_port(codes, wiring),
                                                                      0, 0]})
-        steps = int(seconds * 1e9 // step_ns)
+        end_ns = int(round(seconds * 1e9))
+        prev_ns, aligned, k = 0, 0, 0       # aligned: stops since the origin was set
         q.execute("cont")
-        for k in range(steps):
+        while prev_ns + step_ns <= end_ns:
             f = emu.read_frame()
+            k += 1
             t_ns, s = f[1], f[2:]
-            if f[0] != k + 1 or t_ns != (k + 1) * step_ns:
-                raise RuntimeError(f"lockstep: stop {f[0]} at {t_ns} ns, expected stop {k + 1} "
-                                   f"at {(k + 1) * step_ns} ns")
+            dt_ns = t_ns - prev_ns
+            if f[0] != k or dt_ns <= 0 or dt_ns > step_ns or (aligned > 1 and dt_ns != step_ns):
+                raise RuntimeError(f"lockstep: stop {f[0]} at {t_ns} ns after {prev_ns} ns "
+                                   f"(expected stop {k}, {step_ns} ns later)")
+            prev_ns = t_ns
+            pit_start, pit_period = s[5], s[6]
+            if aligned:
+                aligned += 1
+            elif pit_period == step_ns:
+                # The PIT runs at the step's rate: put the boundaries just before its ticks.
+                q.execute("qom-set", {"path": LOCKSTEP, "property": "origin-ns",
+                                      "value": pit_start + step_ns - TICK_LEAD_NS})
+                aligned = 1
             # Duty and direction in effect at the boundary drive the wheels for the step.
             duty_l, duty_r = s[1] / 10000.0, s[3] / 10000.0
             if not world.alive:
                 duty_l = duty_r = 0.0
-            turned = [w.advance(d * direction, step_ns / 1e9)
+            turned = [w.advance(d * direction, dt_ns / 1e9)
                       for w, d, direction in ((wheels[0], duty_l, s[2]), (wheels[1], duty_r, s[4]))]
-            world.step(step_ns / 1e9, turned[0], turned[1], duty_l * abs(s[2]), duty_r * abs(s[4]))
+            world.step(dt_ns / 1e9, turned[0], turned[1], duty_l * abs(s[2]), duty_r * abs(s[4]))
             codes = world.sensors()
             emu.send_inputs([codes[c] for c in ANALOG] +
                             [input_port(codes, wiring), wheels[0].encoder, wheels[1].encoder])

@@ -45,6 +45,8 @@ def run_host(world, rec, lib_path, seed, seconds, step_s=0.0078125, on_step=None
         # Cycles due in this step, at their own times (sensors as of the step start).
         while next_cycle < t + step_s - 1e-12:
             mask, out = prog.cycle(sensor_inputs(world.sensors(), wiring))
+            if mask == 0xFFFFFFFF:
+                raise RuntimeError("the PDL host runtime refused to run a cycle")
             duty = [out[0] / 1000.0, out[1] / 1000.0]
             status = {"ran": [prog.names[i] for i in range(prog.procs) if mask >> i & 1],
                       "motor": (out[0], out[1]), "hunger": out[2],

@@ -88,7 +88,7 @@ def main(argv=None):
             if a.host_lib:
                 names = HostProgram(a.host_lib, 1).names
             names = names or ["bump", "avoid", "cruise", "photo", "dock", "wander", "compete",
-                              "battery"]
+                              "battery", "motors"]
             err = run_emulated(world, rec, a.qemu, a.elf, names, a.seconds,
                                int(round(a.step_ms * 1e6)), on_step, console_lines.append)
     except KeyboardInterrupt:

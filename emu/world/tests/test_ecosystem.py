@@ -57,7 +57,7 @@ def test_same_seed_same_trajectory_other_seed_another(tmp_path, qemu, eco_elf, h
 
 def check_goals(s, seconds, min_recharges):
     assert s["alive"], s
-    assert s["survived_s"] == pytest.approx(seconds)
+    assert seconds - 0.01 <= s["survived_s"] <= seconds
     assert s["recharges"] >= min_recharges, s
     assert s["wall_collisions_after_60s"] == 0, s
     assert s["overruns"] == 0, s

@@ -30,7 +30,9 @@ def inputs(k):
     return [20 + k % 7, 30, 12 + (k * 13) % 60, 12, 200, 0x3F if k % 50 else 0x3D]
 
 
-def frames(qemu, elf, n, step_ns=10_000_000):
+def frames(qemu, elf, n, step_ns=10_000_000, align=False):
+    """n lockstep frames; align: boundaries 1 ms before the firmware's PIT
+    ticks from the second frame on (as cosim.py does)."""
     emu = start(qemu, elf, step_ns)
     try:
         emu.qmp.execute("qom-set", {"path": LOCKSTEP, "property": "inputs", "value": inputs(0)})
@@ -38,6 +40,11 @@ def frames(qemu, elf, n, step_ns=10_000_000):
         out = []
         for k in range(n):
             out.append(emu.read_frame())
+            if align and k == 0:
+                pit_start = emu.qmp.execute("qom-get", {"path": "/machine/sim",
+                                                        "property": "pit-start-ns"})
+                emu.qmp.execute("qom-set", {"path": LOCKSTEP, "property": "origin-ns",
+                                            "value": pit_start + step_ns - 1_000_000})
             emu.send_inputs(inputs(k + 1))
         return out
     finally:
@@ -121,19 +128,50 @@ def _spin(stop):
 
 
 def test_same_inputs_same_run_bit_for_bit_even_under_load(qemu, eco_elf):
-    n = int(os.environ.get("ECO_LOCKSTEP_STEPS", "1500"))      # 15 s of virtual time
-    quiet = frames(qemu, eco_elf, n)
+    """With the boundaries away from the firmware's I/O (1 ms before its
+    ticks), a run is a function of its inputs. (Not with boundaries at an
+    arbitrary phase: guest timing still varies by microseconds around stops,
+    enough to move a motor write that falls within them across a boundary;
+    see emu/README.md.)"""
+    n = int(os.environ.get("ECO_LOCKSTEP_STEPS", "1920"))      # 15 s of virtual time
+    step = 7_812_500
+    quiet = frames(qemu, eco_elf, n, step, align=True)
     stop = multiprocessing.Event()
     hogs = [multiprocessing.Process(target=_spin, args=(stop,)) for _ in range(3)]
     for h in hogs:
         h.start()
     try:
-        loaded = frames(qemu, eco_elf, n)
+        loaded = frames(qemu, eco_elf, n, step, align=True)
     finally:
         stop.set()
         for h in hogs:
             h.join()
-    first_diff = next((k for k, (a, b) in enumerate(zip(quiet, loaded)) if a != b), None)
+    # Compared: what the firmware did at every boundary (duty, direction,
+    # PIT ticks), not the instant of the stop within its 256 ns instruction.
+    def seen(f):
+        return f[:2] + f[3:]
+    first_diff = next((k for k, (a, b) in enumerate(zip(quiet, loaded)) if seen(a) != seen(b)),
+                      None)
     assert first_diff is None, f"runs differ from step {first_diff}: {quiet[first_diff]} " \
                                f"vs {loaded[first_diff]}"
     assert any(f[3] > 0 for f in quiet) and quiet[-1][6] > 100   # motors driven, ticks ran
+
+
+def test_origin_moves_the_boundaries(qemu, eco_elf):
+    emu = start(qemu, eco_elf, 10_000_000)
+    try:
+        q = emu.qmp
+        q.execute("qom-set", {"path": LOCKSTEP, "property": "origin-ns", "value": 23_000_000})
+        assert q.execute("qom-get", {"path": LOCKSTEP, "property": "next-boundary-ns"}) == 3_000_000
+        q.execute("cont")
+        got = []
+        for k in range(3):
+            got.append(emu.read_frame()[1])
+            emu.send_inputs(inputs(k))
+        assert got == [3_000_000, 13_000_000, 23_000_000]
+        # The PIT's phase, for aligning boundaries with the firmware's ticks.
+        start_ns, period = q.batch([qom_get("/machine/sim", "pit-start-ns"),
+                                    qom_get("/machine/sim", "pit-period-ns")])
+        assert period == 7_812_500 and 0 < start_ns < 23_000_000
+    finally:
+        emu.close()
