@@ -28,13 +28,15 @@ ICOUNT = "shift=8,sleep=off"
 # The step: one tick of the ecosystem firmware's 128 Hz kernel clock, and the
 # boundaries placed TICK_LEAD_NS before each tick once the firmware has
 # started its PIT (the lockstep device's origin-ns). Between a tick and the
-# next boundary the firmware does all its I/O: the PDL cycle (snapshot in,
-# motor writes out) right after the tick and the sampler's sweep of the
-# converters (6.0 ms, drivers/README.md). So no read or write of the firmware
-# comes near a boundary, and the slightest difference in guest timing cannot
-# decide on which side of a boundary a value falls. (With boundaries at an
-# arbitrary phase, some fell within microseconds of a motor write.)
-TICK_LEAD_NS = 1_000_000
+# next boundary the firmware does its I/O: the PDL cycle (snapshot in, motor
+# writes out) right after the tick and the sampler's sweep of the converters
+# (6.0 ms, drivers/README.md). So no read or write comes near a boundary,
+# and the slight variation of guest timing around stops (emu/README.md)
+# cannot decide on which side of a boundary a value falls. Measured, six
+# 1.5 s runs each: boundaries at an arbitrary phase, 3.9 ms or 1 ms before
+# the ticks gave two different trajectories (writes during the drivers'
+# start-up fall there); 0.2 ms before the ticks, six identical.
+TICK_LEAD_NS = 200_000
 STEP_NS = 7_812_500
 FRAME_TIMEOUT_S = 60.0
 ANALOG = ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",

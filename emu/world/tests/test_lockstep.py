@@ -31,7 +31,7 @@ def inputs(k):
 
 
 def frames(qemu, elf, n, step_ns=10_000_000, align=False):
-    """n lockstep frames; align: boundaries 1 ms before the firmware's PIT
+    """n lockstep frames; align: boundaries 0.2 ms before the firmware's PIT
     ticks from the second frame on (as cosim.py does)."""
     emu = start(qemu, elf, step_ns)
     try:
@@ -44,7 +44,7 @@ def frames(qemu, elf, n, step_ns=10_000_000, align=False):
                 pit_start = emu.qmp.execute("qom-get", {"path": "/machine/sim",
                                                         "property": "pit-start-ns"})
                 emu.qmp.execute("qom-set", {"path": LOCKSTEP, "property": "origin-ns",
-                                            "value": pit_start + step_ns - 1_000_000})
+                                            "value": pit_start + step_ns - 200_000})
             emu.send_inputs(inputs(k + 1))
         return out
     finally:
@@ -128,7 +128,7 @@ def _spin(stop):
 
 
 def test_same_inputs_same_run_bit_for_bit_even_under_load(qemu, eco_elf):
-    """With the boundaries away from the firmware's I/O (1 ms before its
+    """With the boundaries away from the firmware's I/O (0.2 ms before its
     ticks), a run is a function of its inputs. (Not with boundaries at an
     arbitrary phase: guest timing still varies by microseconds around stops,
     enough to move a motor write that falls within them across a boundary;
