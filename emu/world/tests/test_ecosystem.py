@@ -52,7 +52,7 @@ def test_same_seed_same_trajectory_other_seed_another(tmp_path, qemu, eco_elf, h
     assert a["trajectory_sha256"] != c["trajectory_sha256"]
     assert a["distance_m"] > 1.0                   # the robot moved
     assert a["program_status_lines"] >= 70         # 4 status lines per second from the firmware
-    assert "t=  10.0s" in p1.stdout and "t=  20.0s" in p1.stdout   # plain progress lines
+    assert "t=  10.0s" in p1.stdout                              # plain progress lines
 
 
 def check_goals(s, seconds, min_recharges):
