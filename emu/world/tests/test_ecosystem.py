@@ -13,7 +13,7 @@ from conftest import WORLD
 
 RUN = os.path.join(WORLD, "run.py")
 # make check runs a shorter survival span on the board; make eco-survival the full 600 s.
-SURVIVAL_S = float(os.environ.get("ECO_SURVIVAL_SECONDS", "150"))
+SURVIVAL_S = float(os.environ.get("ECO_SURVIVAL_SECONDS", "120"))
 
 
 def run(tmp_path, *args, expect=0):
