@@ -18,6 +18,8 @@
 #define SAMPLER_WAIT_MS 500u
 #define SAMPLER_PERIOD_MAX_MS 60000u
 #define SAMPLER_CHECK_SWEEPS 4u
+#define SAMPLER_LOOK_MS 100u
+#define SAMPLER_LOOK_TICKS ((SAMPLER_LOOK_MS * K_TICK_HZ + 999u) / 1000u)
 #define SAMPLER_WAIT_TICKS ((SAMPLER_WAIT_MS * K_TICK_HZ + 999u) / 1000u)
 
 static struct sensor_snapshot sampler_latest;
@@ -307,6 +309,9 @@ static void *sampler_main(void *arg)
         if ((int32_t)(wake - k_ticks()) <= 0)
             wake = k_ticks() + SAMPLER_CHECK_SWEEPS *
                    (sampler_period_ticks > sweep_ticks_last ? sampler_period_ticks : sweep_ticks_last);
+        /* A new period (sampler_start) takes effect within SAMPLER_LOOK_MS. */
+        if ((int32_t)(wake - (k_ticks() + SAMPLER_LOOK_TICKS)) > 0)
+            wake = k_ticks() + SAMPLER_LOOK_TICKS;
         k_arch_irq_restore(s);
         (void)k_sleep_until(wake);
     }

@@ -37,7 +37,8 @@ struct sensor_snapshot {
 };
 
 /* Starts the sampler thread (priority SAMPLER_PRIO) with one sweep every
- * period_ms (1..60000); called again, changes the period. The chips must have
+ * period_ms (1..60000); called again, changes the period (in effect within
+ * 100 ms). A period shorter than a sweep (about 6 ms) means back to back. The chips must have
  * been probed (board_io_init). DRV_OK, DRV_ERR_RANGE. */
 #define SAMPLER_PRIO 20u
 int sampler_start(unsigned period_ms);

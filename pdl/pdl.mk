@@ -5,6 +5,7 @@
 #                              + compile-time refusals (add_value on a sensor, ...)
 #   make check-pdl-target      a PDL image on the emulated board (pytest over QMP)
 #   make pdl-bench             cycle cost, CPU load at 1 kHz, stack, flash/RAM (emulated board)
+#   make pdl-host-lib          build/pdl/libpdl_host.a: the host runtime for simulators
 
 PDL_BUILD      := $(BUILD)/pdl
 # The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
@@ -21,8 +22,17 @@ ALL += $(PDL_HOST_TESTS)
 CHECKS += pdl-unit
 HOST_UNIT_CHECKS += pdl-unit
 
-.PHONY: pdl-host-tests check-pdl-unit
+.PHONY: pdl-host-tests check-pdl-unit pdl-host-lib
 pdl-host-tests: $(PDL_HOST_TESTS)
+
+# The host runtime as a library, for simulators (the eco arena): link it with
+# -I$(ROOT) -I$(ROOT)/bsched and include pdl/pdl.h and pdl/host/pdl_host.h.
+PDL_HOST_LIB := $(PDL_BUILD)/libpdl_host.a
+pdl-host-lib: $(PDL_HOST_LIB)
+$(PDL_HOST_LIB): $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(PDL_BUILD)/host-obj
+	cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
+	rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
 
 $(PDL_BUILD)/tests/test_pdl: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
@@ -32,13 +42,27 @@ $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SR
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
+# The README's complete example ("Programming with PDL"), extracted and run.
+PDL_README_TEST := $(PDL_BUILD)/tests/readme_example
+$(PDL_BUILD)/readme_example.c: README.md
+	@mkdir -p $(@D)
+	awk '/^## Programming with PDL/ { s = 1 } s && /^```c$$/ { c = 1; next } \
+	     c && /^```$$/ { exit } c { print }' README.md > $@
+	@test -s $@ || { echo "no C example under 'Programming with PDL' in README.md"; exit 1; }
+$(PDL_README_TEST): pdl/tests/readme_main.c $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
+ALL += $(PDL_README_TEST)
+
 # Misuse the compiler must refuse: each pdl/tests/refuse/*.c has to fail to
-# compile with the message on its first line ("// expect: TEXT").
+# compile (warnings are errors here, whatever HOST_CFLAGS says) with the
+# message on its first line ("// expect: TEXT").
 PDL_REFUSE_SRCS := $(wildcard pdl/tests/refuse/*.c)
 
-check-pdl-unit: $(PDL_HOST_TESTS)
+check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 	@$(SETUP) base
 	@p=0; f=0; rc=0; \
+	if $(PDL_README_TEST); then p=1; else f=1; rc=1; fi; \
 	for t in $(PDL_HOST_TESTS); do \
 	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
 	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
@@ -48,7 +72,7 @@ check-pdl-unit: $(PDL_HOST_TESTS)
 	done; \
 	for src in $(PDL_REFUSE_SRCS); do \
 	    want=$$(sed -n '1s|^// expect: ||p' $$src); \
-	    out=$$(LC_ALL=C $(HOST_CC) $(PDL_HOST_CFLAGS) -fsyntax-only $$src 2>&1); \
+	    out=$$(LC_ALL=C $(HOST_CC) $(PDL_HOST_CFLAGS) -Werror -fsyntax-only $$src 2>&1); \
 	    if [ $$? -ne 0 ] && [ -n "$$want" ] && echo "$$out" | grep -qF -- "$$want"; then \
 	        p=$$((p + 1)); echo "[       OK ] refused at compile time: $$src"; \
 	    else f=$$((f + 1)); rc=1; echo "[  FAILED  ] $$src compiled or without '$$want':"; echo "$$out"; fi; \

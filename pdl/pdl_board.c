@@ -252,14 +252,9 @@ int run_pdl(void)
     if (pdl_thread_started)
         return pdl_refuse(PDL_ERR_RUNNING, "run_pdl");
     pdl_core_period_us = pdl_ticks_to_us(pdl_period_ticks);
-    r = pdl_core_plan();
+    r = pdl_core_start();
     if (r != PDL_OK)
         return r;
-    r = pdl_platform_start_ports();
-    if (r != PDL_OK)
-        return r;
-    pdl_core_set_started(1);
-    pdl_bind_write_actuators(1);    /* the initial values */
     pdl_thread.stop_after = 0;
     /* Start at the beginning of a tick: creating the thread fills its stack
      * (a few thousand instructions), and k_bsched_start releases the first

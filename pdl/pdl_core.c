@@ -219,6 +219,8 @@ static void pdl_plan_record(void)
     (void)bsched_init(&pdl_sched, pdl_pv, pdl_nprocs);   /* live stepping */
 }
 
+int pdl_core_plan_recorded(void) { return pdl_plan_cached; }
+
 int pdl_core_plan(void)
 {
     int32_t r;
@@ -232,6 +234,19 @@ int pdl_core_plan(void)
     pdl_plan_record();
     pdl_cycle_count_begun = 0;
     pdl_dt_us = pdl_core_period_us;
+    return PDL_OK;
+}
+
+int pdl_core_start(void)
+{
+    int r = pdl_core_plan();
+    if (r != PDL_OK)
+        return r;
+    r = pdl_platform_start_ports();
+    if (r != PDL_OK)
+        return r;
+    pdl_started = 1;
+    pdl_bind_write_actuators(1);    /* the initial values */
     return PDL_OK;
 }
 
@@ -257,11 +272,15 @@ void pdl_pend(struct pdl_head *h)
         (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
         return;
     }
-    h->pending = 1;
-    if (h->kind == PDL_KIND_INT)
+    if (h->kind == PDL_KIND_INT) {
         pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
-    else
+    } else if (h->kind == PDL_KIND_FLOAT) {
         pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
+    } else {    /* a sensor cast to a quantity: never committed */
+        (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value (not a writable quantity)");
+        return;
+    }
+    h->pending = 1;
 }
 
 void pdl_cycle_begin(uint32_t now_us)

@@ -24,8 +24,13 @@ void pdl_cycle_end(void);
 
 /* Non-zero (default): record and replay the major cycle (tests compare both ways). */
 extern int pdl_plan_cache_enabled;
+/* Non-zero when run_pdl recorded the major cycle (else bsched steps live). */
+int pdl_core_plan_recorded(void);
 /* Plans the process set (bsched_init); PDL_OK or an error (reported). */
 int pdl_core_plan(void);
+/* run_pdl's common part: plan, bring up the ports, mark the set started
+ * (declarations are refused from now on), write the initial actuator values. */
+int pdl_core_start(void);
 /* Marks the set as started (refuses further declarations). */
 void pdl_core_set_started(int started);
 int pdl_core_started(void);

@@ -23,7 +23,7 @@
 #include "pdl/pdl_board.h"
 
 #define BENCH_MAX_N 30
-#define BENCH_SWEEP_CYCLES 48u
+#define BENCH_SWEEP_CYCLES 40u
 #define BENCH_LOAD_TICKS 256u
 #define BENCH_OVERLOAD_CYCLES 12u
 

@@ -6,7 +6,8 @@
  *
  * Console: "PDL-DEMO running f0_mhz=..." once, then every half second
  * "PDL-DEMO t_ms=... light=L,R ir=L,R battery=B bumpers=L,R motors=L,R
- *  hunger=H led=X cycles=C overruns=O misuse=M driver_errors=D".
+ *  hunger=H led=X cycles=C overruns=O misuse=M driver_errors=D stack=S"
+ * (S: bytes of the cycle thread's stack used so far).
  */
 #include <stdint.h>
 
@@ -15,6 +16,7 @@
 #include "drivers/led.h"
 #include "pdl/examples/behaviours.h"
 #include "pdl/pdl.h"
+#include "pdl/pdl_board.h"
 
 #define DEMO_HZ 100u
 #define DEMO_REPORT_TICKS (K_TICK_HZ / 2u)
@@ -46,13 +48,14 @@ static void *demo_main(void *arg)
         pdl_get_stats(&st);
         k_printf("PDL-DEMO t_ms=%lu light=%ld,%ld ir=%ld,%ld battery=%ld bumpers=%ld,%ld "
                  "motors=%ld,%ld hunger=%ld led=%ld cycles=%lu overruns=%lu misuse=%lu "
-                 "driver_errors=%lu\n",
+                 "driver_errors=%lu stack=%lu\n",
                  (unsigned long)k_uptime_ms(), (long)value(light_left), (long)value(light_right),
                  (long)value(ir_left), (long)value(ir_right), (long)value(battery),
                  (long)value(bumper_left), (long)value(bumper_right), (long)value(motor_left),
                  (long)value(motor_right), (long)value(hunger), (long)value(seeking_led),
                  (unsigned long)st.cycles, (unsigned long)st.overruns,
-                 (unsigned long)st.misuse, (unsigned long)st.driver_errors);
+                 (unsigned long)st.misuse, (unsigned long)st.driver_errors,
+                 (unsigned long)pdl_stack_used());
     }
     return NULL;
 }

@@ -71,16 +71,10 @@ uint32_t pdl_frequency_mhz(void)
 
 int run_pdl(void)
 {
-    int r = pdl_core_plan();
-    if (r != PDL_OK)
-        return r;
-    r = pdl_platform_start_ports();
-    if (r != PDL_OK)
-        return r;
-    pdl_core_set_started(1);
-    host_cycles_run = 0;
-    pdl_bind_write_actuators(1);    /* the initial values */
-    return PDL_OK;
+    int r = pdl_core_start();
+    if (r == PDL_OK)
+        host_cycles_run = 0;
+    return r;
 }
 
 int pdl_run_cycles(uint32_t n)

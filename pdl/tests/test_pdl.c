@@ -285,6 +285,69 @@ static void test_pv_periods(void **state)
     assert_true(runs_n[3] == 25);
 }
 
+/* ---- the recorded major cycle replays exactly what bsched_run_cycle runs ---- */
+#define LOG_MAX 4096u
+static uint16_t run_log[LOG_MAX];
+static unsigned run_log_n;
+#define LOGGER(k) static void logger##k(void) { if (run_log_n < LOG_MAX) run_log[run_log_n++] = k; }
+LOGGER(0) LOGGER(1) LOGGER(2) LOGGER(3) LOGGER(4) LOGGER(5) LOGGER(6) LOGGER(7) LOGGER(8)
+static pdl_process_fn loggers[9] = {logger0, logger1, logger2, logger3, logger4, logger5,
+                                     logger6, logger7, logger8};
+static uint16_t cycle_mark[LOG_MAX];
+
+static int max_pv(const uint8_t *pv, unsigned n)
+{
+    int m = 0;
+    unsigned i;
+    for (i = 0; i < n; i++)
+        m = pv[i] > m ? pv[i] : m;
+    return m;
+}
+
+/* Runs `cycles` cycles of the set; records the process order and where each cycle starts. */
+static unsigned log_run(const uint8_t *pv, unsigned n, unsigned cycles, int cached)
+{
+    unsigned i;
+    pdl_reset();
+    pdl_plan_cache_enabled = cached;
+    run_log_n = 0;
+    for (i = 0; i < n; i++)
+        assert_true(add_process_pv(loggers[i], pv[i]) >= 0);
+    assert_int_equal(run_pdl(), PDL_OK);
+    assert_int_equal(pdl_core_plan_recorded(), cached && max_pv(pv, n) <= 8);
+    for (i = 0; i < cycles; i++) {
+        cycle_mark[i] = (uint16_t)run_log_n;
+        pdl_run_cycles(1);
+    }
+    pdl_plan_cache_enabled = 1;
+    return run_log_n;
+}
+
+static void test_recorded_plan_equals_live_bsched(void **state)
+{
+    static const uint8_t sets[][9] = {
+        {1, 1, 1, 2, 2, 3, 4, 4, 4},        /* the paper's Table 1 */
+        {0, 0, 1, 2, 3, 4, 5, 6, 7},
+        {3, 3, 3, 3, 3, 3, 3, 3, 3},
+        {0, 8, 8, 2, 5, 1, 0, 7, 3},        /* maxpv 8: 256 cycles, still recorded */
+        {9, 0, 1, 2, 3, 4, 5, 6, 7},        /* maxpv 9: 512 cycles, stepped live */
+    };
+    static uint16_t live[LOG_MAX], live_mark[LOG_MAX];
+    unsigned k;
+    (void)state;
+    for (k = 0; k < sizeof sets / sizeof sets[0]; k++) {
+        unsigned cycles = 1200u, n_live, n_cached;
+        n_live = log_run(sets[k], 9, cycles, 0);
+        memcpy(live, run_log, sizeof live);
+        memcpy(live_mark, cycle_mark, sizeof live_mark);
+        n_cached = log_run(sets[k], 9, cycles, 1);
+        assert_int_equal(n_live, n_cached);
+        assert_true(n_live > cycles / 2u);
+        assert_memory_equal(live, run_log, n_live * sizeof live[0]);
+        assert_memory_equal(live_mark, cycle_mark, cycles * sizeof live_mark[0]);
+    }
+}
+
 /* ---- dt ---- */
 static uint32_t dt_seen[16], dtp_seen[16];
 static float dtf_seen, dtpf_seen;
@@ -335,6 +398,16 @@ static void test_float_quantity(void **state)
     assert_float_equal(value(fq), 1.25f, 0.0f);
     pdl_run_cycles(1);
     assert_float_equal(value(fq), 2.0f, 0.0f);  /* clipped */
+}
+
+/* ---- fixed-point help ---- */
+static void test_mul_shift(void **state)
+{
+    (void)state;
+    assert_int_equal(pdl_mul_shift(3 << 8, 5 << 8, 8), 15 << 8);     /* 3.0 * 5.0 in Q8 */
+    assert_int_equal(pdl_mul_shift(-384, 512, 8), -768);            /* -1.5 * 2.0 */
+    assert_int_equal(pdl_mul_shift(INT32_MAX, 2, 1), INT32_MAX);    /* no overflow inside */
+    assert_int_equal(pdl_mul_shift(-3, 1, 1), -2);                  /* toward minus infinity */
 }
 
 /* ---- bindings: sensors from ports, actuators to ports ---- */
@@ -571,8 +644,10 @@ int main(void)
         cmocka_unit_test_setup(test_clipping_at_int32_extremes, setup),
         cmocka_unit_test_setup(test_shuffled_order_same_result, setup),
         cmocka_unit_test_setup(test_pv_periods, setup),
+        cmocka_unit_test_setup(test_recorded_plan_equals_live_bsched, setup),
         cmocka_unit_test_setup(test_dt, setup),
         cmocka_unit_test_setup(test_float_quantity, setup),
+        cmocka_unit_test(test_mul_shift),
         cmocka_unit_test_setup(test_bindings, setup),
         cmocka_unit_test_setup(test_actuator_clipped_to_port_and_driver_errors, setup),
         cmocka_unit_test_setup(test_misuse_before_run, setup),

@@ -27,22 +27,30 @@ def group_of(path):
     return "test program"
 
 
-def main(map_path):
+def input_sections(map_path, kinds=("text", "rodata")):
+    """(section, address, size, object) for every input section of the given
+    kinds the link kept, from a GNU ld map (objects in archives read
+    'lib.a(obj.o)')."""
     text = open(map_path).read()
     body = text.split("Linker script and memory map", 1)[1]
-    sizes = defaultdict(int)
+    names = "|".join(kinds)
     pending = None
     for line in body.splitlines():
-        m = re.match(r"^ (\.(?:text|rodata)\S*)\s*$", line)
+        m = re.match(rf"^ (\.(?:{names})\S*)\s*$", line)
         if m:
             pending = m.group(1)
             continue
-        m = re.match(r"^ (\.(?:text|rodata)\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+\.o)\s*$", line)
+        m = re.match(rf"^ (\.(?:{names})\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+\.o\)?)\s*$", line)
         if m and (m.group(1) or pending):
-            addr, size, path = int(m.group(2), 16), int(m.group(3), 16), m.group(4)
-            if FLASH_LO <= addr < FLASH_HI and size:
-                sizes[group_of(path)] += size
+            yield (m.group(1) or pending), int(m.group(2), 16), int(m.group(3), 16), m.group(4)
         pending = None
+
+
+def main(map_path):
+    sizes = defaultdict(int)
+    for _, addr, size, path in input_sections(map_path):
+        if FLASH_LO <= addr < FLASH_HI and size:
+            sizes[group_of(path)] += size
     for g in sorted(sizes):
         print(f"{sizes[g]:7d}  {g}")
     kernel = (sizes["kernel core"] + sizes["kernel CPU32 port + board glue"] +

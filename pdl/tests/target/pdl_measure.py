@@ -25,6 +25,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[3]
 sys.path.insert(0, str(ROOT / "kernel" / "tests" / "target-kernel"))
 import kmeasure  # noqa: E402
+import ksize  # noqa: E402
 
 ICOUNT = ["-icount", "shift=8,sleep=off"]
 SWEEP = (5, 10, 20, 30)
@@ -115,24 +116,12 @@ def summarise(cycles):
 
 def footprint(map_path):
     """Bytes of the PDL runtime (objects built from pdl/*.c) by region."""
-    text = Path(map_path).read_text()
-    body = text.split("Linker script and memory map", 1)[1]
     sizes = defaultdict(int)
-    pending = None
-    for line in body.splitlines():
-        m = re.match(r"^ (\.(?:text|rodata|data|bss)\S*)\s*$", line)
-        if m:
-            pending = m.group(1)
-            continue
-        m = re.match(r"^ (\.(?:text|rodata|data|bss)\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+\.o\)?)\s*$",
-                     line)
-        if m and (m.group(1) or pending):
-            section = (m.group(1) or pending).split(".")[1]
-            size, path = int(m.group(3), 16), m.group(4)
-            if ("/obj/pdl/" in path or "libpdl.a(" in path) and size:
-                sizes["flash" if section in ("text", "rodata") else "ram"] += size
-                sizes[section] += size
-        pending = None
+    for section, _, size, path in ksize.input_sections(map_path, ("text", "rodata", "data", "bss")):
+        if ("/obj/pdl/" in path or "libpdl.a(" in path) and size:
+            kind = section.split(".")[1]
+            sizes["flash" if kind in ("text", "rodata") else "ram"] += size
+            sizes[kind] += size
     return dict(sizes)
 
 

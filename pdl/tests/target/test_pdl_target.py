@@ -86,22 +86,25 @@ def settled(d, cond, what):
     s = d.wait_status(cond, what)
     s2 = d.status()                     # the motors had half a second to settle
     left, right = d.motor(0), d.motor(1)
-    # the model shows what the runtime wrote (the runtime's view is at most a
-    # few cycles older than the QMP read)
-    assert abs(left - s2["motors"][0]) <= 60 and abs(right - s2["motors"][1]) <= 60, (
+    # the model shows what the runtime wrote; the QMP read comes a little
+    # later in virtual time, and wandering moves the motors by up to ~100
+    assert abs(left - s2["motors"][0]) <= 150 and abs(right - s2["motors"][1]) <= 150, (
         s2, left, right)
     return s2, left, right
 
 
 def test_demo_phototaxis_reads_qmp_light_and_turns_the_motors(demo):
     assert "analog: 6 PCF8591" in demo.boot, demo.boot
-    demo.inputs(light=(200, 50))
-    s, left, right = settled(demo, lambda s: s["light"] == [200, 50], "light 200,50")
+    # light difference 210: the turn alone puts the wheels >= 420 apart,
+    # wandering at most ~100
+    demo.inputs(light=(230, 20))
+    s, left, right = settled(demo, lambda s: s["light"] == [230, 20], "light 230,20")
     assert right > left + 200, (s, left, right)         # turning left, toward the light
-    demo.inputs(light=(40, 220))
-    s, left, right = settled(demo, lambda s: s["light"] == [40, 220], "light 40,220")
+    demo.inputs(light=(20, 230))
+    s, left, right = settled(demo, lambda s: s["light"] == [20, 230], "light 20,230")
     assert left > right + 200, (s, left, right)
     assert s["overruns"] == 0 and s["misuse"] == 0 and s["driver_errors"] == 0, s
+    assert 0 < s["stack"] < 2048, s                      # the cycle thread's stack
 
 
 def test_demo_avoids_obstacles_and_backs_up_on_a_bumper(demo):
