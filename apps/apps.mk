@@ -2,7 +2,8 @@
 #
 #   make firmware [APP=NAME]     build/firmware/NAME/NAME.elf (+ .srec, .map)
 #   make firmware-all            every image
-#   make run [APP=NAME]          boot it on the emulated RoboCube (default: $(APP_DEFAULT))
+#   make run [APP=NAME]          boot it on the emulated RoboCube (default: $(APP_DEFAULT)),
+#                                or run the app's host runner if it names one
 #
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
 # console, PIT, LED, bsched.c: kernel/firmware.mk), the nanokernel and the
@@ -15,9 +16,12 @@
 #   NAME_SRCS      the image's sources (default apps/NAME/*.c)
 #   NAME_RUN_ARGS  extra QEMU arguments for make run (serial ports, QMP, ...)
 #   NAME_ICOUNT    the -icount setting for make run (default $(FW_ICOUNT))
+#   NAME_RUNNER    a host command that make run starts instead of QEMU on the
+#                  console (e.g. a co-simulation that starts QEMU itself)
+#   NAME_RUN_DEPS  further targets make run builds first (e.g. host libraries)
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
-APP_DEFAULT := table1
+APP_DEFAULT := ecosystem
 APP         ?= $(APP_DEFAULT)
 # Libraries every image may link: the target sources directly in these folders.
 APP_LIB_DIRS := drivers net pdl
@@ -80,9 +84,13 @@ firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 
 RUN_SECONDS ?=
 run:
-	@$(SETUP) qemu m68k
-	@$(MAKE) --no-print-directory firmware APP=$(APP)
+	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER),base)
+	@$(MAKE) --no-print-directory firmware $($(APP)_RUN_DEPS) APP=$(APP)
+ifneq ($($(APP)_RUNNER),)
+	@$($(APP)_RUNNER)
+else
 	@echo "make run: booting $(FW_ELF) on $(QEMU_M68K) -M robocube (console = DUART B on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s,; quit with Ctrl-A x))" >&2
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
 	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) -nographic $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
+endif

@@ -572,6 +572,8 @@ static void sim_get_u64(Object *obj, Visitor *v, const char *name,
         value = qemu_clock_get_ns(QEMU_CLOCK_VIRTUAL);
     } else if (!strcmp(name, "pit-period-ns")) {
         value = muldiv64(pit_period_extal(s), NANOSECONDS_PER_SECOND, RC_EXTAL_HZ);
+    } else if (!strcmp(name, "pit-start-ns")) {
+        value = s->pit_start_ns;     /* tick n is due at pit-start-ns + n * period */
     } else if (!strcmp(name, "flash-base")) {
         value = s->flash_mapped ? cs_base(s->cs_bar[CS_BOOT]) : UINT64_MAX;
     } else if (!strcmp(name, "sram-base")) {
@@ -605,6 +607,7 @@ static void sim_init(Object *obj)
     object_property_add(obj, "led-changes", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "virtual-time-ns", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "pit-period-ns", "uint64", sim_get_u64, NULL, NULL, NULL);
+    object_property_add(obj, "pit-start-ns", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "flash-base", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "sram-base", "uint64", sim_get_u64, NULL, NULL, NULL);
     object_property_add(obj, "tpuram-base", "uint64", sim_get_u64, NULL, NULL, NULL);

@@ -171,6 +171,7 @@ static void robocube_init(MachineState *machine)
     mc68681_duart_create(&b->bus, RC_DUART_BASE, intc, serial_hd(1), serial_hd(0));
 
     robocube_io_init(&b->bus, intc);
+    robocube_lockstep_create();
 
     robocube_load_firmware(machine, b);
     qemu_register_reset(robocube_cpu_reset, b);

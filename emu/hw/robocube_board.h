@@ -26,6 +26,7 @@
 #define TYPE_MC68332_SIM   "mc68332-sim"
 #define TYPE_MC68332_QSM   "mc68332-qsm"
 #define TYPE_MC68681_DUART "mc68681-duart"
+#define TYPE_ROBOCUBE_LOCKSTEP "robocube-lockstep"
 
 /*
  * The SIM decodes the boot chip select (flash) and CS0/CS1 (SRAM) and places
@@ -38,5 +39,9 @@ DeviceState *mc68332_qsm_create(MemoryRegion *bus, RoboCubeIntc *intc,
 DeviceState *mc68681_duart_create(MemoryRegion *bus, hwaddr base,
                                   RoboCubeIntc *intc, Chardev *chr_a,
                                   Chardev *chr_b);
+
+/* /machine/lockstep: pauses the VM at every step boundary of virtual time
+ * (robocube_lockstep.c). */
+void robocube_lockstep_create(void);
 
 #endif

@@ -1,0 +1,8 @@
+# The ecosystem robot: the behaviour program (eco_program.c) on the
+# nanokernel's B-scheduler thread, one minor cycle every 2 ticks of 128 Hz
+# (64 Hz), against the simulated world in lockstep (emu/world/).
+# `make run` (APP=ecosystem, the default) starts it through the host runner.
+ecosystem_TICK_HZ := 128
+ecosystem_RUNNER  = $(PYTHON) $(ROOT)/emu/world/run.py --elf $(call app_elf,ecosystem) \
+                    --qemu $(QEMU_M68K) --host-lib $(ECO_HOST_LIB) $(ECO_RUN_ARGS)
+ecosystem_RUN_DEPS = eco-host

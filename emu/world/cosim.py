@@ -1,0 +1,224 @@
+"""Lockstep co-simulation: the emulated RoboCube (QEMU, real firmware) and the
+world advance together in fixed steps of virtual time.
+
+Every step: QEMU stops at the boundary (/machine/lockstep, see
+emu/README.md "Lockstep") and sends one line on the lockstep chardev with the
+wheel motors' duty and direction; the host runs the motor model (motors.py)
+and the world over the step and answers with one line of sensor codes,
+binary inputs and the wheels' encoder counts, which the device writes before
+it resumes the machine by itself. (QMP only
+sets the lists up: a QMP command costs about as much as a whole step.) Virtual time follows only the instruction count (-icount
+shift=8,sleep=off), so the same firmware, arena and seed give the same run
+bit for bit, whatever the load on the host.
+"""
+
+import os
+import re
+import shutil
+import socket
+import subprocess
+import tempfile
+
+from motors import MotorModel
+from qmp_link import QMPLink, qom_get, qom_set
+
+IO = "/machine/robocube-io"
+LOCKSTEP = "/machine/lockstep"
+ICOUNT = "shift=8,sleep=off"
+# The step: one tick of the ecosystem firmware's 128 Hz kernel clock, and the
+# boundaries placed TICK_LEAD_NS before each tick once the firmware has
+# started its PIT (the lockstep device's origin-ns). Between a tick and the
+# next boundary the firmware does its I/O: the PDL cycle (snapshot in, motor
+# writes out) right after the tick and the sampler's sweep of the converters
+# (6.0 ms, drivers/README.md). So no read or write comes near a boundary,
+# and the slight variation of guest timing around stops (emu/README.md)
+# cannot decide on which side of a boundary a value falls. Measured, six
+# 1.5 s runs each: boundaries at an arbitrary phase, 3.9 ms or 1 ms before
+# the ticks gave two different trajectories (writes during the drivers'
+# start-up fall there); 0.2 ms before the ticks, six identical.
+TICK_LEAD_NS = 200_000
+STEP_NS = 7_812_500
+FRAME_TIMEOUT_S = 60.0
+ANALOG = ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
+          "comp_right")
+
+
+def sensor_inputs(codes, wiring):
+    """The program's inputs in eco_host_cycle order (flags 1 = active)."""
+    return [codes[k] for k in ANALOG] + [1 - codes["bumper_left"], 1 - codes["bumper_right"],
+                                         1 - codes["charging"]]
+
+
+def input_port(codes, wiring):
+    """DUART IP0-IP5 levels: pulled up (1) unless a bumper or the charger pulls low."""
+    level = 0x3F
+    for key, pin in (("bumper_left", "ip_bumper_left"), ("bumper_right", "ip_bumper_right"),
+                     ("charging", "ip_charging")):
+        if codes[key] == 0:
+            level &= ~(1 << wiring[pin])
+    return level
+
+
+STATUS_RE = re.compile(r"^eco t=(\d+) ml=(-?\d+) mr=(-?\d+) h=(\d+) ran=([0-9a-f]+) "
+                       r"ovr=(\d+) c=(\S+)$")
+
+
+def parse_status(line, names):
+    """Parses the firmware's status line (apps/ecosystem/ecosystem.c)."""
+    m = STATUS_RE.match(line)
+    if not m:
+        return None
+    mask = int(m.group(5), 16)
+    pairs = [p.split("/") for p in m.group(7).split(",")]
+    return {"ms": int(m.group(1)), "motor": (int(m.group(2)), int(m.group(3))),
+            "hunger": int(m.group(4)),
+            "ran": [n for i, n in enumerate(names) if mask >> i & 1],
+            "overruns": int(m.group(6)),
+            "contrib": {n: (int(a), int(b)) for n, (a, b) in zip(names, pairs)}}
+
+
+class Emulator:
+    """qemu-system-m68k -M robocube running `elf`, paused at start, lockstep on."""
+
+    def __init__(self, qemu, elf, step_ns, extra_args=()):
+        self.dir = tempfile.mkdtemp(prefix="bsched-eco-")
+        sock = os.path.join(self.dir, "qmp")
+        frames = os.path.join(self.dir, "lockstep")
+        self.stderr_path = os.path.join(self.dir, "stderr")
+        self._stderr = open(self.stderr_path, "wb")
+        self.proc = subprocess.Popen(
+            [qemu, "-M", "robocube", "-icount", ICOUNT, "-kernel", elf, "-display", "none",
+             "-serial", "stdio", "-monitor", "none", "-qmp", f"unix:{sock},server=on,wait=off",
+             "-chardev", f"socket,id=lockstep,path={frames},server=on,wait=off",
+             "-global", "robocube-lockstep.chardev=lockstep",
+             "-S", "-global", f"robocube-lockstep.step-ns={step_ns}", *extra_args],
+            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=self._stderr)
+        os.set_blocking(self.proc.stdout.fileno(), False)
+        self.console = b""
+        try:
+            self.qmp = QMPLink(sock)
+            self.frames = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            self.frames.connect(frames)
+            self.frames.settimeout(FRAME_TIMEOUT_S)
+            self.frame_buf = b""
+        except Exception:
+            self.close()
+            raise
+
+    def read_frame(self):
+        """The next "S STEPS BOUNDARY_NS V..." line, as a list of ints."""
+        while b"\n" not in self.frame_buf:
+            try:
+                chunk = self.frames.recv(65536)
+            except socket.timeout:
+                raise RuntimeError(f"lockstep: no frame from QEMU in {FRAME_TIMEOUT_S} s "
+                                   "(the machine hangs or died)") from None
+            if not chunk:
+                raise RuntimeError("lockstep: QEMU closed the frame channel")
+            self.frame_buf += chunk
+        line, self.frame_buf = self.frame_buf.split(b"\n", 1)
+        words = line.decode().split()
+        if words[0] != "S":
+            raise RuntimeError(f"lockstep: QEMU refused a frame: {line.decode()}")
+        return [int(w) for w in words[1:]]
+
+    def send_inputs(self, values):
+        self.frames.sendall(("I " + " ".join(str(int(v)) for v in values) + "\n").encode())
+
+    def read_console(self):
+        """New complete console lines since the last call."""
+        try:
+            chunk = self.proc.stdout.read()
+        except BlockingIOError:
+            chunk = None
+        if chunk:
+            self.console += chunk
+        *lines, self.console = self.console.split(b"\n")
+        return [ln.decode(errors="replace").rstrip("\r") for ln in lines]
+
+    def close(self):
+        """Stops QEMU; returns what it wrote on stderr."""
+        if getattr(self, "frames", None):
+            self.frames.close()
+        if self.proc.poll() is None:
+            self.proc.kill()
+        self.proc.wait()
+        self._stderr.close()
+        with open(self.stderr_path, errors="replace") as f:
+            err = f.read()
+        shutil.rmtree(self.dir, ignore_errors=True)
+        return err
+
+
+def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step=None,
+                 on_console=None):
+    """Runs the lockstep loop for `seconds` of virtual time (or until the
+    battery is empty). names: the program's process names, in index order."""
+    wiring = world.arena["wiring"]
+    ml, mr = wiring["motor_left"], wiring["motor_right"]
+    sample = [f"{LOCKSTEP}:boundary-ns"]
+    for m in (ml, mr):
+        sample += [f"{IO}/motor{m}:duty", f"{IO}/motor{m}:direction"]
+    sample += ["/machine/sim:pit-start-ns", "/machine/sim:pit-period-ns"]
+    inputs = [f"{IO}:ain{wiring['ain_' + k]}" for k in
+              ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
+               "comp_right")] + ["/machine/duart:input-port", f"{IO}/motor{ml}:encoder",
+                                 f"{IO}/motor{mr}:encoder"]
+    wheels = [MotorModel(), MotorModel()]
+    emu = Emulator(qemu, elf, step_ns)
+    try:
+        q = emu.qmp
+        q.batch([qom_set(f"{IO}/motor{ml}", "model-enabled", 0),
+                 qom_set(f"{IO}/motor{mr}", "model-enabled", 0),
+                 qom_set(LOCKSTEP, "sample-props", " ".join(sample)),
+                 qom_set(LOCKSTEP, "input-props", " ".join(inputs))])
+        codes = world.sensors()
+        q.execute("qom-set", {"path": LOCKSTEP, "property": "inputs",
+                              "value": [codes[k] for k in ANALOG] + [input_port(codes, wiring),
+                                                                     0, 0]})
+        end_ns = int(round(seconds * 1e9))
+        prev_ns, aligned, k = 0, 0, 0       # aligned: stops since the origin was set
+        q.execute("cont")
+        while prev_ns + step_ns <= end_ns:
+            f = emu.read_frame()
+            k += 1
+            t_ns, s = f[1], f[2:]
+            dt_ns = t_ns - prev_ns
+            if f[0] != k or dt_ns <= 0 or dt_ns > step_ns or (aligned > 1 and dt_ns != step_ns):
+                raise RuntimeError(f"lockstep: stop {f[0]} at {t_ns} ns after {prev_ns} ns "
+                                   f"(expected stop {k}, {step_ns} ns later)")
+            prev_ns = t_ns
+            pit_start, pit_period = s[5], s[6]
+            if aligned:
+                aligned += 1
+            elif pit_period == step_ns:
+                # The PIT runs at the step's rate: put the boundaries just before its ticks.
+                q.execute("qom-set", {"path": LOCKSTEP, "property": "origin-ns",
+                                      "value": pit_start + step_ns - TICK_LEAD_NS})
+                aligned = 1
+            # Duty and direction in effect at the boundary drive the wheels for the step.
+            duty_l, duty_r = s[1] / 10000.0, s[3] / 10000.0
+            if not world.alive:
+                duty_l = duty_r = 0.0
+            turned = [w.advance(d * direction, dt_ns / 1e9)
+                      for w, d, direction in ((wheels[0], duty_l, s[2]), (wheels[1], duty_r, s[4]))]
+            world.step(dt_ns / 1e9, turned[0], turned[1], duty_l * abs(s[2]), duty_r * abs(s[4]))
+            codes = world.sensors()
+            emu.send_inputs([codes[c] for c in ANALOG] +
+                            [input_port(codes, wiring), wheels[0].encoder, wheels[1].encoder])
+            for line in emu.read_console():
+                st = parse_status(line, names)
+                if st:
+                    rec.last_status = st
+                    rec.overruns = st["overruns"]
+                    rec.status_lines += 1
+                elif on_console:
+                    on_console(line)
+            rec.step(t_ns)
+            if on_step:
+                on_step(world, rec)
+            if not world.alive:
+                break
+    finally:
+        err = emu.close()
+    return err

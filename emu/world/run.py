@@ -1,0 +1,133 @@
+#!/usr/bin/env python3
+"""make run: the ecosystem. The robot program runs on the emulated RoboCube
+(real firmware, QEMU in lockstep with the world) or, with --host, on the host
+against the same world (fast mode). Shows a live view (a terminal) or
+progress lines (a pipe), then a summary, the picture and the trajectory's
+sha256. Exit status 0 after a complete run (whatever the robot did), 2 on
+bad input, 1 when the emulator or the program failed."""
+
+import argparse
+import json
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from world import ArenaError, World, load_arena          # noqa: E402
+from record import Recorder, save_picture, summary_lines  # noqa: E402
+from view import LiveView, PlainProgress                  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DEFAULT_ARENA = os.path.join(HERE, "arenas", "default.json")
+STEP_MS = 7.8125
+
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--seconds", type=float, default=120.0, help="virtual seconds (default 120)")
+    ap.add_argument("--seed", type=int, default=1, help="sensor-noise seed (default 1)")
+    ap.add_argument("--arena", default=DEFAULT_ARENA, help="arena file (JSON)")
+    ap.add_argument("--host", action="store_true", help="fast mode: the program on the host")
+    ap.add_argument("--elf", help="firmware image (emulated mode)")
+    ap.add_argument("--qemu", default=os.environ.get("BSCHED_QEMU"), help="qemu-system-m68k")
+    ap.add_argument("--host-lib", help="libeco_host.so (fast mode)")
+    ap.add_argument("--step-ms", type=float, default=STEP_MS,
+                    help=f"lockstep step (default {STEP_MS} ms: one kernel tick, see cosim.py)")
+    ap.add_argument("--out", default="build/run", help="folder for ecosystem.png and summary.json")
+    ap.add_argument("--view", choices=("auto", "live", "plain", "none"), default="auto")
+    ap.add_argument("--trace", help="write every step's pose (t_ns x y th soc) to this file")
+    a = ap.parse_args(argv)
+    if not a.seconds > 0:
+        ap.error("--seconds must be positive")
+    if not 0.1 <= a.step_ms <= 1000:
+        ap.error("--step-ms must be within 0.1 .. 1000")
+    if a.host and not a.host_lib:
+        ap.error("--host needs --host-lib")
+    if not a.host and not (a.elf and a.qemu):
+        ap.error("the emulated mode needs --elf and --qemu")
+    for path in (a.elf, a.qemu, a.host_lib):
+        if path and not os.path.exists(path):
+            ap.error(f"{path}: no such file")
+    return a
+
+
+def main(argv=None):
+    a = parse_args(sys.argv[1:] if argv is None else argv)
+    try:
+        arena = load_arena(a.arena)
+    except ArenaError as e:
+        print(f"run.py: {e}", file=sys.stderr)
+        return 2
+    world = World(arena, a.seed)
+    trace = open(a.trace, "w") if a.trace else None
+    rec = Recorder(world, trace=trace)
+    mode = "host fast mode" if a.host else "emulated RoboCube, lockstep"
+    view = a.view
+    if view == "auto":
+        view = "live" if sys.stdout.isatty() else "plain"
+    title = f"ecosystem: {os.path.basename(a.arena)}, seed {a.seed}, {mode}"
+    print(f"{title}: {a.seconds:g} s of virtual time", flush=True)
+    shown = {"live": lambda: LiveView(title), "plain": PlainProgress,
+             "none": None}[view]
+    shown = shown() if shown else None
+    console_lines = []
+    wall0 = time.monotonic()
+    on_step = shown.update if shown else None
+    try:
+        if shown:
+            shown.__enter__()
+        if a.host:
+            from hostmode import run_host
+            run_host(world, rec, a.host_lib, a.seed, a.seconds, a.step_ms / 1000.0, on_step)
+            err = ""
+        else:
+            from cosim import run_emulated
+            from hostmode import HostProgram
+            names = None
+            if a.host_lib:
+                names = HostProgram(a.host_lib, 1).names
+            names = names or ["bump", "avoid", "cruise", "photo", "dock", "wander", "compete",
+                              "battery", "motors"]
+            err = run_emulated(world, rec, a.qemu, a.elf, names, a.seconds,
+                               int(round(a.step_ms * 1e6)), on_step, console_lines.append)
+    except KeyboardInterrupt:
+        print("run.py: interrupted", file=sys.stderr)
+        return 1
+    except Exception as e:                   # the emulator or QMP failed
+        print(f"run.py: {type(e).__name__}: {e}", file=sys.stderr)
+        return 1
+    finally:
+        if shown:
+            if isinstance(shown, LiveView):
+                shown.update(world, rec, force=True)
+            shown.__exit__(None, None, None)
+    wall = time.monotonic() - wall0
+    if trace:
+        trace.close()
+    s = rec.summary()
+    s.update({"mode": "host" if a.host else "emulated", "seed": a.seed, "arena": a.arena,
+              "wall_s": round(wall, 2), "real_time_factor": round(world.t / wall, 2) if wall else None,
+              "program_status_lines": rec.status_lines})
+    os.makedirs(a.out, exist_ok=True)
+    png = os.path.join(a.out, "ecosystem.png")
+    save_picture(rec, png, title)
+    with open(os.path.join(a.out, "summary.json"), "w") as f:
+        json.dump(s, f, indent=1)
+    for line in console_lines[:20]:
+        print(f"robot console: {line}")
+    # QEMU warns once that no virtual timer is armed: that is the machine
+    # sitting paused (-S, and at each lockstep stop), not a problem.
+    err = "\n".join(ln for ln in (err or "").splitlines()
+                    if "icount sleep disabled and no active timers" not in ln)
+    if err.strip():
+        print("emulator stderr:\n" + err.strip(), file=sys.stderr, flush=True)
+    print("\n".join(summary_lines(s, mode)))
+    print(f"  wall time:       {wall:.1f} s ({s['real_time_factor']}x real time)")
+    print(f"picture: {os.path.abspath(png)}")
+    print(f"trajectory sha256: {s['trajectory_sha256']}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
