@@ -195,9 +195,14 @@ class Graph:
         key = (f, ctx)
         if key in self.memo:
             return self.memo[key]
-        if f in stack:
-            self.recursive.add(' -> '.join(stack[stack.index(f):] + (f,)))
-            return 0, ()
+        # Recursion is f entered again in the same context: the same function
+        # under another wrapper (bsched_run_cycle inside a PDL cycle that the
+        # kernel's bsched_run_cycle runs) resolves its indirect calls to other
+        # targets, so it is a bounded nesting, not a cycle.
+        for i, g in enumerate(stack):
+            if g == f and next((a for a in reversed(stack[:i]) if a in self.contexts), None) == ctx:
+                self.recursive.add(' -> '.join(stack[i:] + (f,)))
+                return 0, ()
         if f in ASM_FRAMES:
             own = ASM_FRAMES[f]
         elif f in self.frames:
