@@ -17,6 +17,7 @@
 #include "drivers/motor.h"
 #include "drivers/sai.h"
 #include "drivers/tpu.h"
+#include "net/net.h"
 
 struct shell_cmd {
     const char *name;
@@ -379,6 +380,41 @@ static void cmd_console(int argc, char **argv, const char *line)
              (unsigned long)st.ring_full, (unsigned long)st.overruns, (unsigned long)st.errors);
 }
 
+/* net: the radio stack's statistics; net start N: join the radio as station N. */
+static void cmd_net(int argc, char **argv, const char *line)
+{
+    static int started;
+    int32_t station;
+    int rc;
+    (void)line;
+    if (argc == 1) {
+        if (!started)
+            k_printf("net: not started (net start STATION)\n");
+        else
+            (void)net_stats_print();
+        return;
+    }
+    if (argc != 3 || !same(argv[1], "start")) {
+        reply_error("net: unknown subcommand '%s' (try net, or net start STATION)", argv[1]);
+        return;
+    }
+    if (!parse_int(argv[2], &station) || station < 0 || station > 255) {
+        reply_error("net: '%s': station 0..255", argv[2]);
+        return;
+    }
+    if (started) {
+        reply_error("net: already started as station %u", (unsigned)net_station());
+        return;
+    }
+    rc = net_init((uint8_t)station, k_ticks());
+    if (rc != K_OK) {
+        reply_error("net: station %ld refused (%d)", (long)station, rc);
+        return;
+    }
+    started = 1;
+    k_printf("net: station %u started\n", (unsigned)net_station());
+}
+
 static void cmd_help(int argc, char **argv, const char *line);
 
 static const struct shell_cmd commands[] = {
@@ -398,6 +434,7 @@ static const struct shell_cmd commands[] = {
     {"sleep", "MS", "wait MS milliseconds (0..60000), for scripts", 1, 1, cmd_sleep},
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
     {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
+    {"net", "[start STATION]", "radio statistics; net start N joins the radio as station N", 0, 2, cmd_net},
 };
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 

@@ -80,7 +80,7 @@ def test_help_lists_every_command(shell):
     answer = shell.run("help")
     names = [line.split()[0] for line in answer]
     for cmd in ("help", "ad", "da", "bio", "bin", "fast", "pwm", "motor", "enc", "led",
-                "ps", "uptime", "i2c", "console", "speed", "sleep"):
+                "ps", "uptime", "i2c", "console", "speed", "sleep", "net"):
         assert cmd in names, answer
 
 
@@ -228,9 +228,11 @@ def test_uptime_follows_virtual_time(shell):
     ms1, ticks1 = uptime()
     vt = shell.qget("/machine/sim", "virtual-time-ns") / 1e6
     ms2, ticks2 = uptime()
-    # uptime counts ticks from k_start (the boot before it takes a few ms of
-    # virtual time) and lags by up to one tick (0.98 ms)
-    assert ms1 <= vt <= ms2 + 10
+    # uptime counts ticks from k_start and lags by up to one tick (0.98 ms);
+    # virtual time counts from reset, and the boot before k_start (probing both
+    # I2C buses, the boot report at 38400 baud) takes 10-15 ms of it (measured:
+    # vt - uptime >= 9.6 ms right after boot, 13 ms in another run)
+    assert ms1 <= vt <= ms2 + 25
     assert ms2 - ms1 >= 0
     assert ticks2 > ticks1
     assert abs(ticks2 * 1000 / 1024 - ms2) <= 2
@@ -370,3 +372,18 @@ def test_absent_chip_and_stuck_bus_answer_errors_and_the_shell_goes_on(shell):
     assert shell.one("ad 5") == "ad 5 = 77"
     assert shell.run("i2c scan")[0] == "i2c bus A: 8 devices 0x38 0x39 0x48 0x49 0x4a 0x4b 0x4c 0x4d"
     shell.one("led off")
+
+
+def test_net_statistics_and_start(shell):
+    """`net` prints the radio stack's counters (issue 11's shell command); the
+    stack runs only after `net start N`, once, with N a station number."""
+    assert shell.one("net") == "net: not started (net start STATION)"
+    for bad in ("net bogus", "net start", "net start 256", "net start x", "net start 1 2"):
+        shell.error(bad)
+    assert shell.one("net start 2") == "net: station 2 started"
+    stats = shell.run("net")
+    assert stats[0] == "net: station 2"
+    assert re.match(r"  frames sent \d+, received \d+, crc errors \d+, malformed \d+$", stats[1])
+    assert re.match(r"  retransmissions \d+, collisions \d+, deferrals \d+, mac drops \d+$", stats[2])
+    assert stats[3].startswith("  messages delivered 0, duplicates dropped 0, unreachable 0")
+    assert "already started" in shell.error("net start 3")
