@@ -28,15 +28,7 @@ $(DRV_BUILD)/tests/test_analog: drivers/tests/host/test_analog.c drivers/analog.
 
 check-drivers-unit: $(DRV_HOST_TESTS)
 	@$(SETUP) base
-	@p=0; f=0; rc=0; \
-	for t in $(DRV_HOST_TESTS); do \
-	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
-	done; \
-	$(call record,drivers-unit,$$p,$$f); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite drivers-unit $(DRV_HOST_TESTS)
 
 check-drivers-target:
 	@$(SETUP) base m68k qemu

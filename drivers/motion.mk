@@ -25,15 +25,7 @@ $(MOTION_BUILD)/test_odometry: drivers/tests/test_odometry.c drivers/odometry.c 
 
 check-motion-unit: $(MOTION_UNIT_TESTS)
 	@$(SETUP) base
-	@p=0; f=0; rc=0; \
-	for t in $(MOTION_UNIT_TESTS); do \
-	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
-	done; \
-	$(call record,motion-unit,$$p,$$f); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite motion-unit $(MOTION_UNIT_TESTS)
 
 check-motion-target:
 	@$(SETUP) base m68k qemu

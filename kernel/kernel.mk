@@ -34,15 +34,7 @@ $(K_BUILD)/tests/test_k_%: kernel/tests/host/test_k_%.c $(K_CORE_SRCS) $(K_HOST_
 
 check-kernel-unit: $(K_HOST_TESTS)
 	@$(SETUP) base
-	@p=0; f=0; rc=0; \
-	for t in $(K_HOST_TESTS); do \
-	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
-	done; \
-	$(call record,kernel-unit,$$p,$$f); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite kernel-unit $(K_HOST_TESTS)
 
 # ---- CPU32 target ----
 K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -ffunction-sections \

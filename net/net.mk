@@ -31,15 +31,7 @@ $(NET_BUILD)/tests/test_%: net/tests/test_%.c $(wildcard net/*.h) $(wildcard net
 check-net-unit:
 	@$(SETUP) base net
 	@$(MAKE) --no-print-directory $(NET_UNIT_TESTS)
-	@p=0; f=0; rc=0; \
-	for t in $(NET_UNIT_TESTS); do \
-	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
-	done; \
-	$(call record,net-unit,$$p,$$f); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite net-unit $(NET_UNIT_TESTS)
 
 NETNODE_ELF := $(call app_elf,netnode)
 
