@@ -44,7 +44,14 @@ check-net-target:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample
 	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
-	    $(ROOT)/net/tests/target
+	    -m "not interop" $(ROOT)/net/tests/target
+
+# The host peer speaking first to a fresh board: flaky (net/README.md, known bugs).
+.PHONY: net-interop
+net-interop:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode
+	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-interop -m interop $(ROOT)/net/tests/target
 
 BOARDS   ?= 2
 MESSAGES ?= 5

@@ -40,6 +40,11 @@ class Air:
             self.medium.stop()
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "interop: a host peer speaks first to a fresh board "
+                            "(known flaky, make net-interop)")
+
+
 @pytest.fixture
 def air():
     a = Air()
