@@ -49,7 +49,9 @@ cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC
 
 CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
 $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
-CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors fast fast-due
+# (fast, fast-due: bsched/fast against Fig. 7's wait[], which the state no longer
+# has; left out until stream fig7 retires bsched/fast.)
+CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
 CBMC_HARNESS_step        := step
 CBMC_ARGS_step           := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_balance     := balance
