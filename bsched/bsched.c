@@ -381,19 +381,26 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /* The class table of bsched_step, before place_processes moves the cursors. */
     /*@ ghost lemma_first(pv, count); */
     /*@ loop invariant 0 <= pvk <= BSCHED_MAX_PV + 1;
-        loop invariant table: \forall integer j; 0 <= j < pvk ==>
-            s->class_first[j] == class_first(pv, count, j) &&
-            s->class_size[j] == class_count(pv, count, j) &&
+        loop invariant table_first: \forall integer j; 0 <= j < pvk ==>
+            s->class_first[j] == class_first(pv, count, j);
+        loop invariant table_size: \forall integer j; 0 <= j < pvk ==>
+            s->class_size[j] == class_count(pv, count, j);
+        loop invariant table_lead: \forall integer j; 0 <= j < pvk ==>
             s->class_lead[j] == pow2(j) - class_start(pv, count, j);
         loop assigns pvk, s->class_first[0 .. BSCHED_MAX_PV], s->class_size[0 .. BSCHED_MAX_PV],
             s->class_lead[0 .. BSCHED_MAX_PV];
         loop variant BSCHED_MAX_PV + 1 - pvk;
     */
     for (pvk = 0u; pvk <= BSCHED_MAX_PV; pvk++) {
-        /*@ assert first_bound: class_first(pv, count, pvk) <= count; */
+        /*@ assert first_bound: classes.next[pvk] == class_first(pv, count, pvk) <= count; */
+        /*@ assert size_bound: classes.size[pvk] == class_count(pv, count, pvk) <= count; */
+        /*@ assert start_bound: classes.cursor[pvk] == class_start(pv, count, pvk) < pow2(pvk); */
         s->class_first[pvk] = (uint16_t)classes.next[pvk];
         s->class_size[pvk] = (uint16_t)classes.size[pvk];
         s->class_lead[pvk] = period_of(pvk) - classes.cursor[pvk];
+        /*@ assert stored: s->class_first[pvk] == class_first(pv, count, pvk) &&
+                s->class_size[pvk] == class_count(pv, count, pvk) &&
+                s->class_lead[pvk] == pow2(pvk) - class_start(pv, count, pvk); */
     }
     place_processes(s, &classes, pv, count);
     perfect = perfect_load(&classes, pv, count);
@@ -508,6 +515,10 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
  * rev_k(t mod 2^k) is the top k of the maxpv bits of `reversed`
  * (spec/bsched_step.h). Returns how many: load(t), at most `perfect` (the
  * balance theorem), so Fig. 7's cap is not needed. */
+/* out[] may lie in *s (bsched_step passes s->ran), so the writes to it change
+ * the memory of the state's other 16-bit fields for the provers: every fact
+ * about order[] is stated in the pre-state (label Pre), and the fields read
+ * are shown unchanged (kept). */
 /*@ requires valid: \valid_read(s) && \valid(out + (0 .. s->perfect - 1));
     requires state: well_formed(s) && sorted_order(s) && closed_form(s) && class_table(s) &&
         s->perfect == perfect_of(&s->pv[0], s->count);
@@ -517,11 +528,11 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         &s->class_size[0 .. BSCHED_MAX_PV], &s->class_lead[0 .. BSCHED_MAX_PV]);
     requires counter: reversed == rev(s->maxpv, t);
     assigns out[0 .. s->perfect - 1];
-    ensures load: \result == load(&s->pv[0], s->count, t) == due_slots(s, t, s->count);
-    ensures bound: \result <= s->perfect;
+    ensures load: \result == load(&s->pv[0], \old(s->count), t) == \old(due_slots(s, t, s->count));
+    ensures bound: \result <= \old(s->perfect);
     ensures listed_due: \forall integer x; 0 <= x < \result ==>
-        out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
-    ensures due_listed: \forall integer i; 0 <= i < s->count &&
+        out[x] < \old(s->count) && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+    ensures due_listed: \forall integer i; 0 <= i < \old(s->count) &&
         t % pow2(s->pv[i]) == s->offset[i] ==> \exists integer x; 0 <= x < \result && out[x] == i;
 */
 static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t *out)
@@ -531,29 +542,23 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
     uint32_t maxpv = s->maxpv;
     uint32_t k;
 
-    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
-    /*@ ghost lemma_pow2_bound(); */
-    /*@ ghost lemma_count(s->pv, s->count); */
-    /*@ ghost lemma_first(s->pv, s->count); */
-    /*@ ghost step_first_bounds(s->pv, s->count, s->minpv, s->maxpv); */
-    /*@ ghost step_due_slots_mono((struct bsched *)s, t, s->count); */
-    /*@ ghost lemma_slots_all((struct bsched *)s, t); */
-    /*@ ghost lemma_slots_by_class((struct bsched *)s, t); */
-    /*@ ghost lemma_balance(s->pv, s->count, t); */
-    /*@ ghost lemma_fold(s->pv, s->count); */
-    /*@ ghost lemma_start_is_area(s->pv, s->count); */
-    /*@ ghost lemma_rev_top(); */
-    /*@ ghost lemma_rev_range(); */
-    /*@ ghost lemma_hits(); */
-    /*@ assert total: due_slots(s, t, s->count) == load(&s->pv[0], s->count, t) <= s->perfect; */
+    /*@ ghost
+      uint32_t n = s->count;
+      step_collect_facts((struct bsched *)s, t, reversed);
+    */
     /*@ loop invariant k_range: s->minpv <= k <= maxpv + 1;
-        loop invariant counted: done == due_slots(s, t, class_first(&s->pv[0], s->count, k));
+        loop invariant kept: s->count == n && s->perfect == \at(s->perfect, Pre) &&
+            (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
+            (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+                s->class_first[j] == \at(s->class_first[j], Pre) &&
+                s->class_size[j] == \at(s->class_size[j], Pre));
+        loop invariant counted: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k));
         loop invariant listed_due: \forall integer x; 0 <= x < done ==>
-            out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
-        loop invariant due_listed: \forall integer d; 0 <= d < class_first(&s->pv[0], s->count, k) &&
-            t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
-            \exists integer x; 0 <= x < done && out[x] == s->order[d];
-        loop assigns k, done, out[0 .. s->perfect - 1];
+            out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+        loop invariant due_listed: \forall integer d; 0 <= d < class_first(&s->pv[0], n, k) &&
+            t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+            \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre);
+        loop assigns k, done, out[0 .. \at(s->perfect, Pre) - 1];
         loop variant maxpv + 1 - k;
     */
     for (k = s->minpv; k <= maxpv; k++) {
@@ -562,7 +567,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         size_t slot = (top + s->class_lead[k]) % period;
         size_t size = s->class_size[k];
         /*@ ghost
-          int64_t area = slots_area(s->pv, s->count, (int)k);
+          int64_t area = slots_area(s->pv, n, (int)k);
           int64_t y = (int64_t)top;
           int64_t j0 = (int64_t)slot;
           int64_t q = area / (int64_t)period + 1 - (y + (int64_t)s->class_lead[k]) / (int64_t)period;
@@ -573,12 +578,12 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ assert lead_is: s->class_lead[k] == period - area % period; */
         /*@ ghost step_residue(period, area, y, s->class_lead[k], j0); */
         /*@ ghost step_class_start(period, area, y, q, j0); */
-        /*@ ghost lemma_slots_class((struct bsched *)s, t, (int)k); */
-        /*@ assert class_range: class_first(&s->pv[0], s->count, k + 1) ==
-                s->class_first[k] + size <= s->count; */
-        /*@ assert class_hits: due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
-                done0 + ((area + size - y + period - 1) / period - q); */
-        /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= s->perfect; */
+        /*@ assert class_range: class_first(&s->pv[0], n, k + 1) == s->class_first[k] + size <= n &&
+                s->class_first[k] == class_first(&s->pv[0], n, k) &&
+                size == class_count(&s->pv[0], n, k); */
+        /*@ assert class_hits: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
+                done0 + ((area + size - y + period - 1) / period - (area - y + period - 1) / period); */
+        /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= \at(s->perfect, Pre); */
 
         if (slot < size) {
             size_t end = s->class_first[k] + size;
@@ -588,18 +593,25 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
                 loop invariant done_walk: done == done0 + i;
                 loop invariant walk_in: i == 0 || j0 + (i - 1) * period < size;
                 loop invariant walk_room: q + i <= (area + size - y + period - 1) / period;
+                loop invariant kept: s->count == n && s->perfect == \at(s->perfect, Pre) &&
+                    (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
+                    (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+                        s->class_first[j] == \at(s->class_first[j], Pre) &&
+                        s->class_size[j] == \at(s->class_size[j], Pre));
                 loop invariant walk_listed: \forall integer m; 0 <= m < i ==>
                     out[done0 + m] == s->order[s->class_first[k] + (j0 + m * period)];
                 loop invariant listed_due: \forall integer x; 0 <= x < done ==>
-                    out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
-                loop invariant kept: \forall integer x; 0 <= x < done0 ==> out[x] == \at(out[x], LoopEntry);
-                loop assigns slot, done, i, out[0 .. s->perfect - 1];
+                    out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+                loop invariant before: \forall integer x; 0 <= x < done0 ==> out[x] == \at(out[x], LoopEntry);
+                loop assigns slot, done, i, out[0 .. \at(s->perfect, Pre) - 1];
                 loop variant end - slot;
             */
             do {
                 /*@ ghost step_class_more(period, area, y, q, j0, i, size); */
                 /*@ ghost step_due_member(period, area, y, q, j0, i); */
-                /*@ ghost lemma_slots_slot((struct bsched *)s, t, (uint32_t)slot); */
+                /*@ assert slot_ok: slots_slot_ok{Pre}(s, t, slot); */
+                /*@ assert slot_due: s->order[slot] < n && s->pv[s->order[slot]] == k &&
+                        t % pow2(s->pv[s->order[slot]]) == s->offset[s->order[slot]]; */
                 out[done] = s->order[slot];
                 done++;
                 slot += period;
@@ -608,21 +620,41 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         }
         /*@ ghost step_class_count(period, area, y, q, j0, i, size); */
         /*@ ghost step_member_index(period, area, y, q, j0, i, size); */
-        /*@ assert class_counted: done == due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)); */
-        /*@ assert class_index: \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
-                class_first(&s->pv[0], s->count, k + 1) &&
-                t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
+        /*@ assert class_counted: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)); */
+        /*@ assert class_index: \forall integer d; class_first(&s->pv[0], n, k) <= d <
+                class_first(&s->pv[0], n, k + 1) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
                 0 <= (area + (d - s->class_first[k])) / period - q < i &&
-                out[done0 + ((area + (d - s->class_first[k])) / period - q)] == s->order[d]; */
-        /*@ assert class_listed: \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
-                class_first(&s->pv[0], s->count, k + 1) &&
-                t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
-                \exists integer x; 0 <= x < done && out[x] == s->order[d]; */
+                out[done0 + ((area + (d - s->class_first[k])) / period - q)] == \at(s->order[d], Pre); */
+        /*@ assert class_listed: \forall integer d; class_first(&s->pv[0], n, k) <= d <
+                class_first(&s->pv[0], n, k + 1) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+        /*@ assert old_listed: \forall integer d; 0 <= d < class_first(&s->pv[0], n, k) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+        /*@ assert k_next: (uint32_t)(k + 1) == k + 1; */
+        /*@ assert counted_next: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, (uint32_t)(k + 1))); */
+        /*@ assert listed_next: \forall integer d; 0 <= d < class_first(&s->pv[0], n, (uint32_t)(k + 1)) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+        /*@ assert listed_due_next: \forall integer x; 0 <= x < done ==>
+                out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
+        /*@ assert kept_next: s->count == n && s->perfect == \at(s->perfect, Pre) &&
+                (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
+                (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+                    s->class_first[j] == \at(s->class_first[j], Pre) &&
+                    s->class_size[j] == \at(s->class_size[j], Pre)); */
     }
-    /*@ assert all_slots: class_first(&s->pv[0], s->count, maxpv + 1) == s->count; */
-    /*@ assert all_procs: \forall integer i; 0 <= i < s->count ==>
-            0 <= sorted_pos(&s->pv[0], s->count, i) < s->count &&
-            s->order[sorted_pos(&s->pv[0], s->count, i)] == i; */
+    /*@ assert all_slots: k == maxpv + 1 && class_first(&s->pv[0], n, k) == n; */
+    /*@ assert all_listed: \forall integer d; 0 <= d < n &&
+            t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+            \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+    /*@ assert all_procs: \forall integer i; 0 <= i < n && t % pow2(s->pv[i]) == s->offset[i] ==>
+            \let d = sorted_pos(&s->pv[0], n, i); 0 <= d < n && \at(s->order[d], Pre) == i; */
+    /*@ assert final_listed: \forall integer i; 0 <= i < n && t % pow2(s->pv[i]) == s->offset[i] ==>
+            \exists integer x; 0 <= x < done && out[x] == i; */
+    /*@ assert done_small: done == due_slots{Pre}(s, t, n) <= \at(s->perfect, Pre) <= n; */
     return (uint32_t)done;
 }
 
@@ -694,6 +726,8 @@ int32_t bsched_step(struct bsched *s)
     */
     while (bit != 0u && reversed >= bit) { /* at most maxpv carries */
         /*@ ghost lemma_rev_carry(e, u); */
+        /*@ assert odd: u % 2 == 1 && bit == pow2(e - 1); */
+        /*@ assert next_goal: rev(e, u + 1) == rev(e - 1, u / 2 + 1); */
         reversed -= bit;
         bit /= 2u;
         /*@ ghost
@@ -710,6 +744,16 @@ int32_t bsched_step(struct bsched *s)
     /*@ ghost rev_mod_inv(); */
     /*@ assert next_mod: rev(s->maxpv, t + 1) == rev(s->maxpv, (t + 1) % pow2(s->maxpv)); */
     s->reversed = reversed + bit;
+    /*@ assert order_same: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==>
+            s->order[d] == \at(s->order[d], Pre); */
+    /*@ assert table_same: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+            s->class_first[k] == \at(s->class_first[k], Pre) &&
+            s->class_size[k] == \at(s->class_size[k], Pre); */
+    /*@ assert sizes_same: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre); */
+    /*@ assert cycle_range: s->cycle < pow2(s->maxpv); */
+    /*@ assert wf_kept: well_formed(s); */
+    /*@ assert sorted_same: sorted_order(s); */
+    /*@ assert table_kept: class_table(s); */
     /*@ ghost lemma_scheduled(s); */
     return (int32_t)done;
 }

@@ -192,7 +192,7 @@
 /* Member j0 + i P of the class is at residue Y. */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= q && 0 <= i <= 65536;
-     requires 0 <= b && b + j0 == y + p * q;
+     requires 0 <= b <= 281474976710656 && 0 <= j0 < p && b + j0 == y + p * q;
      requires q <= 281474976710656;
      assigns \nothing;
      ensures member_due: (b + (j0 + i * p)) % p == y;
@@ -207,7 +207,7 @@
 /* below(B) == q: no member before j0 is at residue Y. */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= j0 < p && 0 <= q;
-     requires 0 <= b && b + j0 == y + p * q && q <= 281474976710656;
+     requires 0 <= b <= 281474976710656 && b + j0 == y + p * q && q <= 281474976710656;
      assigns \nothing;
      ensures below_b: (b - y + p - 1) / p == q;
   @/
@@ -222,7 +222,7 @@
  * counts it: below(B + c) >= q + i + 1. */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= j0 < p && 0 <= q && 0 <= i <= 65536;
-     requires 0 <= b && b + j0 == y + p * q && q <= 281474976710656;
+     requires 0 <= b <= 281474976710656 && b + j0 == y + p * q && q <= 281474976710656;
      requires 0 <= c <= 65535 && j0 + i * p < c;
      assigns \nothing;
      ensures below_more: q + i + 1 <= (b + c - y + p - 1) / p;
@@ -242,7 +242,7 @@
  * below(B + c) - below(B) == i. */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= j0 < p && 0 <= q && 0 <= i <= 65536;
-     requires 0 <= b && b + j0 == y + p * q && q <= 281474976710656;
+     requires 0 <= b <= 281474976710656 && b + j0 == y + p * q && q <= 281474976710656;
      requires 0 <= c <= 65535;
      requires stopped: c <= j0 + i * p;
      requires last: i == 0 || j0 + (i - 1) * p < c;
@@ -259,31 +259,35 @@
   }
 */
 
-/* Every member j < c at residue Y is j0 + m P for an m below i. */
+/* Every member j < c at residue Y is j0 + m P for an m below i; stated for
+ * x = B + j (a plain variable under / and %, so that provers instantiate it). */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= j0 < p && 0 <= q && 0 <= i <= 65536;
-     requires 0 <= b && b + j0 == y + p * q;
+     requires 0 <= b && y + p * q <= b + j0 <= y + p * q;
      requires 0 <= c && c <= j0 + i * p;
      assigns \nothing;
-     ensures member_index: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-         0 <= (b + j) / p - q < i && j == j0 + ((b + j) / p - q) * p;
+     ensures index_lower: \forall integer x; b <= x < b + c && x % p == y ==> 0 <= x / p - q;
+     ensures index_upper: \forall integer x; b <= x < b + c && x % p == y ==> x / p - q + 1 <= i;
+     ensures index_form: \forall integer x; b <= x < b + c && x % p == y ==>
+         x - b == j0 + (x / p - q) * p;
   @/
   void step_member_index(int64_t p, int64_t b, int64_t y, int64_t q, int64_t j0, int64_t i, int64_t c)
   {
     lemma_bal_div_bounds();
     lemma_bal_mul_mono();
-    /@ assert euclid: \forall integer j; 0 <= j < c ==>
-           b + j == p * ((b + j) / p) + (b + j) % p; @/
-    /@ assert offset: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-           j == j0 + p * ((b + j) / p) - p * q; @/
-    /@ assert offset2: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-           j == j0 + p * ((b + j) / p - q); @/
-    /@ assert lower: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-           p * 0 < p * ((b + j) / p - q) + p; @/
-    /@ assert upper: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-           p * ((b + j) / p - q + 1) < p * i + p; @/
-    /@ assert upper2: \forall integer j; 0 <= j < c && (b + j) % p == y ==>
-           (b + j) / p - q + 1 <= i; @/
+    /@ assert euclid: \forall integer x; b <= x < b + c ==> x == p * (x / p) + x % p; @/
+    /@ assert offset: \forall integer x; b <= x < b + c && x % p == y ==>
+           x - b == j0 + p * (x / p) - p * q; @/
+    /@ assert offset2: \forall integer x; b <= x < b + c && x % p == y ==>
+           x - b == j0 + p * (x / p - q); @/
+    /@ assert lower: \forall integer x; b <= x < b + c && x % p == y ==>
+           p * 0 < p * (x / p - q) + p; @/
+    /@ assert upper: \forall integer x; b <= x < b + c && x % p == y ==>
+           p * (x / p - q + 1) < p * i + p; @/
+    /@ assert upper2: \forall integer x; b <= x < b + c && x % p == y ==> x / p - q + 1 <= i; @/
+    /@ assert lower2: \forall integer x; b <= x < b + c && x % p == y ==> 0 <= x / p - q; @/
+    /@ assert commute: \forall integer x; b <= x < b + c && x % p == y ==>
+           x - b == j0 + (x / p - q) * p; @/
   }
 */
 
@@ -321,6 +325,103 @@
     /@ assert sum: c + w == p * (c / p + 1 - (o + p - c % p) / p) + o; @/
     /@ assert q_nonneg: c / p + 1 - (o + p - c % p) / p >= 0; @/
     lemma_div_unique(c + w, p, c / p + 1 - (o + p - c % p) / p, o);
+  }
+*/
+
+/* lemma_slots_class for every class at once, so that collect_due can state
+ * the class counts in its pre-state (it writes out[], which may share memory
+ * with the state's other 16-bit fields). */
+/*@ ghost
+  /@ requires \valid_read(s);
+     requires 1 <= s->count <= BSCHED_MAX_PROCS;
+     requires \forall integer i; 0 <= i < s->count ==> s->pv[i] <= BSCHED_MAX_PV;
+     requires slots_ok: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
+     assigns \nothing;
+     ensures classes_step: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+         due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+         due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
+         hits(k, class_area(&s->pv[0], s->count, k), class_count(&s->pv[0], s->count, k),
+              rev(k, t % pow2(k)));
+  @/
+  void step_slots_classes(struct bsched *s, uint32_t t)
+  {
+    int k = 0;
+    /@ loop invariant 0 <= k <= BSCHED_MAX_PV + 1;
+       loop invariant \forall integer j; 0 <= j < k ==>
+         due_slots(s, t, class_first(&s->pv[0], s->count, j + 1)) ==
+         due_slots(s, t, class_first(&s->pv[0], s->count, j)) +
+         hits(j, class_area(&s->pv[0], s->count, j), class_count(&s->pv[0], s->count, j),
+              rev(j, t % pow2(j)));
+       loop assigns k;
+       loop variant BSCHED_MAX_PV + 1 - k;
+    @/
+    while (k < BSCHED_MAX_PV + 1) {
+      lemma_slots_class(s, t, k);
+      k = k + 1;
+    }
+  }
+*/
+
+/* Everything collect_due needs about the state and cycle t, in one contract,
+ * so that its own goals see these facts and not the lemmas behind them. */
+/*@ ghost
+  /@ requires \valid_read(s);
+     requires state: well_formed(s) && sorted_order(s) && closed_form(s) && class_table(s) &&
+         s->perfect == perfect_of(&s->pv[0], s->count);
+     requires counter: reversed == rev(s->maxpv, t);
+     assigns \nothing;
+     ensures pow2_range: \forall integer b; 0 <= b <= BSCHED_MAX_PV ==> 1 <= pow2(b) <= 2147483648;
+     ensures pow2_shift: \forall integer b; 0 <= b <= BSCHED_MAX_PV ==> (1 << b) == pow2(b);
+     ensures total: due_slots(s, t, s->count) == load(&s->pv[0], s->count, t) <= s->perfect <= s->count;
+     ensures first_min: class_first(&s->pv[0], s->count, s->minpv) == 0;
+     ensures first_max: class_first(&s->pv[0], s->count, s->maxpv + 1) == s->count;
+     ensures first_next: \forall integer k; s->minpv <= k <= s->maxpv ==>
+         0 <= class_first(&s->pv[0], s->count, k) &&
+         class_first(&s->pv[0], s->count, k + 1) ==
+             class_first(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) &&
+         class_first(&s->pv[0], s->count, k + 1) <= s->count;
+     ensures sorted: \forall integer i; 0 <= i < s->count ==>
+         0 <= sorted_pos(&s->pv[0], s->count, i) < s->count &&
+         s->order[sorted_pos(&s->pv[0], s->count, i)] == i;
+     ensures slots: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
+     ensures mono: \forall integer a, b; 0 <= a <= b <= s->count ==>
+         due_slots(s, t, a) <= due_slots(s, t, b);
+     ensures classes: \forall integer k; s->minpv <= k <= s->maxpv ==>
+         due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+         due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
+         (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
+          rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
+         (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k);
+     ensures start_is_area: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+         class_start(&s->pv[0], s->count, k) == class_area(&s->pv[0], s->count, k) % pow2(k);
+     ensures top: \forall integer k; s->minpv <= k <= s->maxpv ==>
+         reversed / pow2(s->maxpv - k) == rev(k, t % pow2(k)) && 0 <= rev(k, t % pow2(k)) < pow2(k);
+  @/
+  void step_collect_facts(struct bsched *s, uint32_t t, uint32_t reversed)
+  {
+    lemma_pow2(BSCHED_MAX_PV);
+    lemma_pow2_bound();
+    lemma_count(s->pv, s->count);
+    lemma_first(s->pv, s->count);
+    lemma_classes(s->pv, s->count);
+    step_first_bounds(s->pv, s->count, s->minpv, s->maxpv);
+    step_due_slots_mono(s, t, s->count);
+    lemma_slots_all(s, t);
+    step_slots_classes(s, t);
+    lemma_slots_by_class(s, t);
+    lemma_balance(s->pv, s->count, t);
+    lemma_fold(s->pv, s->count);
+    lemma_start_is_area(s->pv, s->count);
+    lemma_rev_top();
+    lemma_rev_range();
+    lemma_hits();
+    lemma_bal_area_nonneg(s->pv, s->count);
+    /@ assert counts_small: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+           0 <= class_count(&s->pv[0], s->count, k) <= 65535 && class_area(&s->pv[0], s->count, k) >= 0; @/
+    /@ assert hits_closed: \forall integer k; s->minpv <= k <= s->maxpv ==>
+           hits(k, class_area(&s->pv[0], s->count, k), class_count(&s->pv[0], s->count, k), rev(k, t % pow2(k))) ==
+           below(k, rev(k, t % pow2(k)), class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k)) -
+           below(k, rev(k, t % pow2(k)), class_area(&s->pv[0], s->count, k)); @/
   }
 */
 
