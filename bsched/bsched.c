@@ -534,6 +534,10 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         out[x] < \old(s->count) && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
     ensures due_listed: \forall integer i; 0 <= i < \old(s->count) &&
         t % pow2(s->pv[i]) == s->offset[i] ==> \exists integer x; 0 <= x < \result && out[x] == i;
+    ensures kept: s->count == \old(s->count) && s->perfect == \old(s->perfect) &&
+        (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \old(s->order[d])) &&
+        (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+            s->class_first[j] == \old(s->class_first[j]) && s->class_size[j] == \old(s->class_size[j]));
 */
 static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t *out)
     /*@ ghost (uint32_t t) */
@@ -574,7 +578,12 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
           int64_t i = 0;
           size_t done0 = done;
         */
+        /*@ assert period_is: period == pow2(k) && 1 <= period <= 2147483648; */
+        /*@ assert top_is: top == reversed / pow2(maxpv - k); */
         /*@ assert y_is: y == rev(k, t % pow2(k)) && 0 <= y < period; */
+        /*@ assert lead_table: s->class_lead[k] == pow2(k) - class_start(&s->pv[0], n, k); */
+        /*@ assert start_area: class_start(&s->pv[0], n, k) == class_area(&s->pv[0], n, k) % pow2(k) &&
+                area == class_area(&s->pv[0], n, k); */
         /*@ assert lead_is: s->class_lead[k] == period - area % period; */
         /*@ ghost step_residue(period, area, y, s->class_lead[k], j0); */
         /*@ ghost step_class_start(period, area, y, q, j0); */
@@ -806,6 +815,7 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
 {
     uint32_t period;
     uint32_t t;
+    uint32_t done;
 
     if (s == NULL || due == NULL) {
         return BSCHED_ERR_NULL;
@@ -816,9 +826,16 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
     period = period_of(s->maxpv);
     /* Both terms are below 2^31: no wrap. */
     t = (s->cycle + ahead % period) % period;
+    /*@ ghost lemma_pow2_bound(); */
+    /*@ assert period_range: period == pow2(s->maxpv) && 1 <= period <= 2147483648 &&
+            s->cycle < period; */
     /*@ ghost step_mod_add(s->cycle, ahead, period); */
     /*@ assert t_is: t == (s->cycle + ahead) % pow2(s->maxpv) < pow2(s->maxpv); */
-    return (int32_t)collect_due(s, reverse_bits(t, s->maxpv), due) /*@ ghost (t) */;
+    done = collect_due(s, reverse_bits(t, s->maxpv), due) /*@ ghost (t) */;
+    /*@ assert due_range: \forall integer j; 0 <= j < done ==> 0 <= due[j] < s->count; */
+    /*@ assert due_exact: \forall integer i; 0 <= i < s->count ==>
+            ((\exists integer j; 0 <= j < done && due[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
+    return (int32_t)done;
 }
 
 /*@ requires valid_state: s == \null || \valid_read(s);
@@ -859,6 +876,9 @@ int32_t bsched_wait(const struct bsched *s, uint16_t i)
     period = period_of(s->pv[i]);
     /* (offset - cycle) mod 2^pv without an unsigned wrap: offset < 2^pv <= 2^31. */
     wait = (s->offset[i] + period - s->cycle % period) % period;
+    /*@ ghost lemma_pow2_bound(); */
+    /*@ assert period_range: period == pow2(s->pv[i]) && 1 <= period <= 2147483648 &&
+            s->offset[i] < period; */
     /*@ ghost step_wait(period, s->offset[i], s->cycle, wait); */
     /*@ ghost lemma_phase_due(period, s->cycle, wait, s->offset[i]); */
     return (int32_t)wait;

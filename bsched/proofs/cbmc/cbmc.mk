@@ -52,8 +52,13 @@ $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
 # (fast, fast-due: bsched/fast against Fig. 7's wait[], which the state no longer
 # has; left out until stream fig7 retires bsched/fast.)
 CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
+# step: the new bsched_step divides by 2^(maxpv - k) and reduces mod 2^k (shifts
+# and masks for the compiler, dividers for the SAT back end), so its run is far
+# below the goal bounds (bsched/proofs/README.md); WP proves it for every set.
+CBMC_STEP_N ?= 4
+CBMC_STEP_P ?= 3
 CBMC_HARNESS_step        := step
-CBMC_ARGS_step           := N=$(CBMC_N) P=$(CBMC_P)
+CBMC_ARGS_step           := N=$(CBMC_STEP_N) P=$(CBMC_STEP_P)
 CBMC_HARNESS_balance     := balance
 CBMC_ARGS_balance        := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_major_cycle := major_cycle

@@ -24,6 +24,9 @@ WP_DEFINES  ?=
 WP_FCT      ?=
 WP_OUT      ?= $(WP_DIR)
 WP_EXPECT_FAIL ?=
+# Goals known not to be proven yet (bsched/proofs/README.md, "Not proven"): the gate
+# lists them as KNOWN GAP instead of failing. Empty when the proof is complete.
+WP_KNOWN_GAPS ?=
 # Extra Frama-C options, e.g. -machdep x86_32 (make prove-machdeps, assure/assure.mk).
 WP_MACHDEP_FLAGS ?=
 export WHY3CONFIG := $(BSCHED_TOOLS)/why3/why3.conf
@@ -62,7 +65,8 @@ prove:
 	if [ $$rc -ne 0 ]; then tail -20 $(WP_OUT)/wp.log; echo "prove: frama-c exited $$rc"; exit 1; fi; \
 	python3 bsched/proofs/wp/wp_report.py $(WP_OUT)/wp.log $(WP_OUT)/wp.json $(WP_OUT)/report.json \
 	    --min-goals $(WP_MIN_GOALS) --spec $(WP_SPEC) --seconds $$secs \
-	    $(if $(WP_EXPECT_FAIL),--expect-fail $(WP_EXPECT_FAIL))
+	    $(if $(WP_EXPECT_FAIL),--expect-fail $(WP_EXPECT_FAIL)) \
+	    $(if $(WP_KNOWN_GAPS),--known-gap $(WP_KNOWN_GAPS))
 
 check-wp:
 	@$(SETUP) frama-c
