@@ -713,8 +713,12 @@ int32_t bsched_step(struct bsched *s)
     reversed = s->reversed;
     /*@ ghost uint32_t t = s->cycle; */
     done = collect_due(s, reversed, s->ran) /*@ ghost (t) */;
+    /*@ assert ran_listed: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
+    /*@ assert ran_exact: \forall integer i; 0 <= i < s->count ==>
+            ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ ghost lemma_balance(s->pv, s->count, t); */
     s->ran_count = (uint16_t)done;
+    /*@ assert ran_listed_1: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
     s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
     /* rev(t + 1) from rev(t): add 1 at the top bit of the reversed counter and
      * carry downwards (bit is 0 after the last carry only when t + 1 wraps). */
@@ -764,6 +768,11 @@ int32_t bsched_step(struct bsched *s)
     /*@ assert sorted_same: sorted_order(s); */
     /*@ assert table_kept: class_table(s); */
     /*@ ghost lemma_scheduled(s); */
+    /*@ assert ran_listed_2: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
+    /*@ assert ran_exact_2: \forall integer i; 0 <= i < s->count ==>
+            ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
+    /*@ assert periodic: s->ran_count == done && \forall integer i; 0 <= i < s->count ==>
+            (ran_last(s, i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     return (int32_t)done;
 }
 
