@@ -579,6 +579,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
           size_t done0 = done;
         */
         /*@ assert period_is: period == pow2(k) && 1 <= period <= 2147483648; */
+        /*@ assert shift_ok: 0 <= maxpv - k <= BSCHED_MAX_PV && (uint32_t)(maxpv - k) == maxpv - k; */
         /*@ assert top_is: top == reversed / pow2(maxpv - k); */
         /*@ assert y_is: y == rev(k, t % pow2(k)) && 0 <= y < period; */
         /*@ assert lead_table: s->class_lead[k] == pow2(k) - class_start(&s->pv[0], n, k); */
