@@ -13,8 +13,8 @@ and libgcc helpers that have no .ci (fixed sizes below), and walks the graph:
   k_thread_start calls; so the bound is conservative;
 - recursion (a cycle in the graph) makes the bound unknown: the check fails.
 
-Threads come from the sources: every k_thread_create(..., ENTRY, ARG, STACK,
-SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
+Threads come from the sources: every k_thread_create or board_spawn(..., ENTRY, ARG,
+STACK, SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
 plus the kernel's own idle and reporter threads; sizes from K_STACK_DEFINE and
 the #defines. A thread's worst case is the trampoline, its entry's deepest
 path, and IRQ_NESTING interrupt frames on top (the CPU32 takes interrupts on
@@ -147,7 +147,7 @@ def find_threads(sources, defs, linked):
 
     threads = []
     for p, t in text.items():
-        for m in re.finditer(r'\bk_thread_create\s*\(([^;]*?)\)\s*[;!=)]', t, re.S):
+        for m in re.finditer(r'\b(?:k_thread_create|board_spawn)\s*\(([^;]*?)\)\s*[;!=)]', t, re.S):
             args = [a.strip() for a in re.split(r',(?![^(]*\))', m.group(1))]
             if len(args) == 7 and re.match(r'\w+$', args[2]) and args[2] != 'entry':
                 threads.append((args[1].strip('"'), args[2], size_of(args[5]), os.path.relpath(p, ROOT)))

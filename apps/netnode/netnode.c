@@ -16,7 +16,7 @@
  * Every mode runs the echo service and prints the statistics at the end.
  */
 #include "kernel.h"
-#include "k_board.h"
+#include "drivers/board.h"
 #include "net/net.h"
 #include "net/xdr.h"
 
@@ -226,13 +226,8 @@ static void *main_fn(void *arg)
 int main(void)
 {
     cfg = netnode_config;
-    k_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
-    (void)k_thread_create(&main_thread, "main", main_fn, NULL, main_stack, sizeof main_stack, 9);
+    board_start("netnode");
+    (void)board_spawn(&main_thread, "main", main_fn, NULL, main_stack, sizeof main_stack, 9);
     k_start();
     return 0;
 }

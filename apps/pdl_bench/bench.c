@@ -17,8 +17,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "k_board.h"
-#include "drivers/led.h"
+#include "drivers/board.h"
 #include "pdl/pdl.h"
 #include "pdl/pdl_board.h"
 
@@ -194,18 +193,12 @@ static void *bench_main(void *arg)
 
 int main(void)
 {
-    k_init();
-    led_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
+    board_start("pdl_bench");
     k_printf("\nPDL benchmark: tick %lu Hz\n", (unsigned long)K_TICK_HZ);
-    if (k_thread_create(&spinner_thread, "spinner", spinner_main, NULL, spinner_stack,
-                        sizeof spinner_stack, K_PRIO_APP_MIN) != K_OK ||
-        k_thread_create(&bench_thread, "bench", bench_main, NULL, bench_stack,
-                        sizeof bench_stack, K_PRIO_APP_MIN + 10u) != K_OK)
+    if (board_spawn(&spinner_thread, "spinner", spinner_main, NULL, spinner_stack,
+                    sizeof spinner_stack, K_PRIO_APP_MIN) != K_OK ||
+        board_spawn(&bench_thread, "bench", bench_main, NULL, bench_stack, sizeof bench_stack,
+                    K_PRIO_APP_MIN + 10u) != K_OK)
         k_printf("PDL-BENCH RESULT FAIL (threads)\n");
     k_start();
     return 0;
