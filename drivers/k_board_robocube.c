@@ -19,6 +19,7 @@
 #include "k_internal.h"
 #include "k_board.h"
 #include "cpu.h"
+#include "mc68332.h"
 #include "drivers/mc68681.h"
 #include "drivers/duart.h"
 #include "drivers/duart_console.h"
@@ -194,16 +195,24 @@ uint32_t k_board_console_dropped(void)
     return k_console_drops;
 }
 
+/* PIT hook: runs inside the kernel's interrupt entry (k_board_pit_isr). */
 static void k_board_tick(uint32_t ticks)
 {
     void (*cb)(void);
     (void)ticks;
-    k_isr_enter();
     k_tick();
     cb = k_board_tick_callback;
     if (cb != NULL)
         cb();
-    k_isr_exit();
+}
+
+/* The tick goes through the kernel's interrupt entry like every other
+ * interrupt: on the interrupt stack, with the scheduling decision at its
+ * outermost exit. */
+static void k_board_pit_isr(void *arg)
+{
+    (void)arg;
+    pit_interrupt();
 }
 
 int k_board_init(void)
@@ -222,7 +231,8 @@ int k_board_init(void)
             k_duart_handlers[i].fn = NULL;
     }
     DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
-    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK)
+    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK ||
+        k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     return pit_start(K_TICK_HZ, k_board_tick);
 }

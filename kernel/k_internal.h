@@ -11,12 +11,13 @@
 #define K_MAGIC_EVENT 0x45564E31u
 
 struct k_kernel {
+    /* First: the CPU32 interrupt entry (switch.S) reads it at k_kernel + 0. */
+    volatile uint32_t isr_nesting;
     struct k_prioq ready;
     struct k_tlist timers;
     struct k_thread *current;
     struct k_thread idle;
     struct k_thread boot;          /* the context k_start was called from */
-    volatile uint32_t isr_nesting;
     volatile k_ticks_t ticks;
     uint32_t seconds;              /* whole seconds of uptime */
     uint32_t subticks;             /* ticks into the current second */

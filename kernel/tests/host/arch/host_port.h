@@ -14,5 +14,7 @@ void host_tick(void);
 /* An interrupt on vector at this point. */
 void host_raise_irq(unsigned vector);
 int host_irq_disabled(void);
+/* Times the kernel halted the system (k_arch_halt) since the program began. */
+extern int host_halted;
 
 #endif

@@ -23,6 +23,12 @@
 #endif
 
 static int irq_disabled;
+
+static void host_unpoison_stacks(void)
+{
+    for (struct k_thread *t = k_kernel.all; t != NULL; t = t->all_next)
+        HOST_UNPOISON(t->stack_base, t->stack_words * sizeof(uint32_t));
+}
 static ucontext_t *boot_uc;
 char host_console[HOST_CONSOLE_SIZE];
 size_t host_console_len;
@@ -90,11 +96,31 @@ void k_arch_idle(void)
     }
     /* Nothing will ever be ready again: back to k_start's caller. */
     (void)k_arch_irq_save();
-    for (struct k_thread *t = k_kernel.all; t != NULL; t = t->all_next)
-        HOST_UNPOISON(t->stack_base, t->stack_words * sizeof(uint32_t));
+    host_unpoison_stacks();
     k_kernel.current = &k_kernel.boot;
     if (swapcontext(&k_kernel.idle.ctx.uc, boot_uc) != 0)
         abort();
+}
+
+const uint32_t *k_arch_irq_stack(size_t *words)
+{
+    *words = 0;
+    return NULL; /* handlers run on the interrupted thread's stack */
+}
+
+/* The kernel stopped the system (a fatal report): the test gets control
+ * back as if k_start had returned, and host_halted says why. */
+int host_halted;
+void k_arch_halt(void)
+{
+    (void)k_arch_irq_save();
+    host_halted++;
+    host_unpoison_stacks();
+    k_kernel.current = &k_kernel.boot;
+    k_kernel.started = 0;
+    if (boot_uc != NULL)
+        (void)setcontext(boot_uc);
+    abort();
 }
 
 int k_arch_irq_route(unsigned vector)
