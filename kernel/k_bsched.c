@@ -81,6 +81,11 @@ static void *k_bsched_reporter(void *arg)
 static void *k_bsched_main(void *arg)
 {
     struct k_bsched *b = arg;
+    /* The first release counts from when the thread runs, not from the
+     * call of k_bsched_start: filling the two stacks (for their high-water
+     * marks) may take most of a tick, and a release already due would make
+     * the first cycle late. */
+    b->next_release = k_ticks() + 1u;
     for (;;) {
         k_ticks_t start, end, late;
         int32_t ran;

@@ -534,25 +534,28 @@ static k_ticks_t k_timespec_to_ticks(const struct k_timespec *t)
 
 int k_abs_to_timeout(const struct k_timespec *abs, k_ticks_t *timeout)
 {
-    struct k_timespec now;
-    int32_t sec, nsec;
-    struct k_timespec rel;
+    uint32_t s, sec, sub, part, abs_sec;
     if (!k_timespec_valid(abs))
         return K_EINVAL;
-    (void)k_clock_gettime(K_CLOCK_MONOTONIC, &now);
-    sec = abs->tv_sec - now.tv_sec;
-    nsec = abs->tv_nsec - now.tv_nsec;
-    if (nsec < 0) {
-        nsec += 1000000000;
-        sec--;
-    }
-    if (sec < 0) {
+    s = k_arch_irq_save();
+    sec = k_kernel.seconds;
+    sub = k_kernel.subticks;
+    k_arch_irq_restore(s);
+    /* In whole ticks: the deadline is the first tick at or after abs. (The
+     * clock reads a tick's start with its nanoseconds truncated, so
+     * subtracting timespecs left up to a nanosecond that rounded up to one
+     * tick too many when a tick fell between the two clock reads.) */
+    abs_sec = (uint32_t)abs->tv_sec;
+    part = ((uint32_t)abs->tv_nsec * 2u + K_NS_PER_TICK_X2 - 1u) / K_NS_PER_TICK_X2;
+    if (abs_sec < sec || (abs_sec == sec && part <= sub)) {
         *timeout = K_NO_WAIT;
         return K_OK;
     }
-    rel.tv_sec = sec;
-    rel.tv_nsec = nsec;
-    *timeout = k_timespec_to_ticks(&rel);
+    if (abs_sec - sec >= 0x7FFFFFFFu / K_TICK_HZ - 1u) {
+        *timeout = 0x7FFFFFFFu;
+        return K_OK;
+    }
+    *timeout = (abs_sec - sec) * K_TICK_HZ + part - sub;
     return K_OK;
 }
 

@@ -115,8 +115,8 @@ static uint32_t spin_for(k_ticks_t ticks)
 
 /* The overloaded program: at f0 = 64 Hz (16 ticks), a process of about 20
  * ticks (13000 turns of ~6.5 instructions, 3814 per tick). Every cycle overruns;
- * the rate stays below what the kernel's reporter can print at 38400 baud
- * (a line per overrun event), so the reports keep up and lower threads run. */
+ * the kernel's reporter prints at most one burst of lines a second and sums
+ * the rest, so lower threads run whatever the overrun rate. */
 #define OVERLOAD_HZ 64u
 static volatile uint32_t overload_sink;
 static void overloaded(void)

@@ -242,6 +242,12 @@ typedef void (*k_irq_handler)(void *arg);
 int k_irq_register(unsigned vector, unsigned level, k_irq_handler handler, void *arg);
 /* Non-zero inside an interrupt handler. */
 int k_in_isr(void);
+/* For a driver's own interrupt handler (claimed in the vector table, not
+ * through k_irq_register) once it has masked all interrupt levels: runs
+ * fn(arg) as the kernel runs a registered handler (on the interrupt stack
+ * where the port has one; fn may post, set events, send with K_NO_WAIT) and
+ * switches to a thread it woke on the way out. */
+void k_isr_call(void (*fn)(void *arg), void *arg);
 /* Called by the interrupt entry around every handler. */
 void k_isr_enter(void);
 void k_isr_exit(void);

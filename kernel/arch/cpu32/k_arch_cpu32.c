@@ -20,7 +20,7 @@ static int k_vector_ram_active;
 
 /* The interrupt stack: k_isr_entry moves there at the outermost interrupt
  * (the CPU32 has a single supervisor stack pointer). Guard words at its low
- * end like a thread stack's, checked when the outermost handler returns;
+ * end like a thread stack's, the topmost checked whenever a handler returns;
  * the rest is filled too, for the high-water mark. */
 K_STACK_DEFINE(k_irq_stack, K_IRQ_STACK_BYTES);
 #define K_IRQ_STACK_WORDS K_STACK_WORDS(K_IRQ_STACK_BYTES)
@@ -50,18 +50,14 @@ void k_arch_thread_init(struct k_thread *t)
  * isr_nesting already counting this interrupt: runs the handler at the
  * interrupt's own level (sr: the SR the CPU set on entry), so that only more
  * urgent levels nest, and returns with the mask at 7 again. */
-#if K_STACK_GUARD_WORDS != 4u
-#error "k_arch_isr_run checks exactly four guard words"
-#endif
 void k_arch_isr_run(unsigned vector, uint32_t sr)
 {
     k_arch_irq_restore(sr);
     k_irq_dispatch(vector);
     (void)k_arch_irq_save();
-    /* Unrolled: it runs at every outermost interrupt. */
-    if (k_kernel.isr_nesting == 1u &&
-        (k_irq_stack[0] != K_STACK_GUARD || k_irq_stack[1] != K_STACK_GUARD ||
-         k_irq_stack[2] != K_STACK_GUARD || k_irq_stack[3] != K_STACK_GUARD)) {
+    /* It runs at every interrupt, so one compare: the topmost guard word is
+     * the first one an overflowing interrupt path writes. */
+    if (k_irq_stack[K_STACK_GUARD_WORDS - 1u] != K_STACK_GUARD) {
         static const char msg[] = "kernel: interrupt stack overflow: halted\n";
         k_console_write_sync(msg, sizeof msg - 1u);
         k_arch_halt();

@@ -95,4 +95,34 @@ k_isr_entry:
     rte
     .size   k_isr_entry, . - k_isr_entry
 
+/*
+ * void k_isr_call(void (*fn)(void *), void *arg): for a driver's own
+ * interrupt handler (a vector it claims in the flash table, not routed
+ * through k_isr_entry) that has already masked all levels. Runs fn(arg) as
+ * the kernel runs a registered handler: on the interrupt stack when it is
+ * the outermost interrupt, counted in isr_nesting, and with the scheduling
+ * decision (k_resched) back on the interrupted stack at the outermost exit.
+ * So such a handler's callbacks never run on a thread's stack either.
+ */
+    .globl  k_isr_call
+    .type   k_isr_call, @function
+k_isr_call:
+    movea.l 4(%sp), %a0                 /* fn */
+    move.l  8(%sp), %d0                 /* arg */
+    movea.l %sp, %a1
+    tst.l   k_kernel                    /* isr_nesting */
+    bne.s   1f
+    movea.l k_arch_irq_stack_top, %sp
+1:  addq.l  #1, k_kernel
+    move.l  %a1, -(%sp)                 /* the caller's stack */
+    move.l  %d0, -(%sp)
+    jsr     (%a0)
+    addq.l  #4, %sp
+    movea.l (%sp), %sp
+    subq.l  #1, k_kernel
+    bne.s   2f
+    jsr     k_resched
+2:  rts
+    .size   k_isr_call, . - k_isr_call
+
     .section .note.GNU-stack, "", %progbits

@@ -383,6 +383,33 @@ static void test_sem_timedwait_absolute(void **state)
     assert_int_equal(k_sem_post(NULL), K_EINVAL);
 }
 
+/* An absolute deadline read at tick 2 (1953125 ns, exact) with tick 3
+ * passing before the wait (2929687.5 ns, which the clock truncates): the
+ * wait must end at tick 2 + 1024, not one tick later (the difference of the
+ * two readings, 1 s - 976562 ns, is a hair over 1023 ticks). */
+static void *sem_timed_abs_after_a_tick(void *arg)
+{
+    struct k_timespec abs;
+    (void)arg;
+    k_sleep_ticks(2);                       /* tick 2 */
+    k_clock_gettime(K_CLOCK_MONOTONIC, &abs);
+    abs.tv_sec += 1;
+    host_tick();                            /* tick 3 before the wait */
+    rc[0] = k_sem_timedwait(&sem, &abs);
+    when[0] = k_ticks();
+    return NULL;
+}
+
+static void test_sem_timedwait_absolute_whole_ticks(void **state)
+{
+    (void)state;
+    k_sem_init(&sem, 0, 1);
+    spawn(0, "t", sem_timed_abs_after_a_tick, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_ETIMEDOUT);
+    assert_int_equal(when[0], 2u + K_TICK_HZ);
+}
+
 /* ---- interrupts ---- */
 
 static void isr_posts(void *arg)
@@ -1117,6 +1144,7 @@ int main(void)
         T(test_sem_timeout),
         T(test_sem_handoff_order),
         T(test_sem_timedwait_absolute),
+        T(test_sem_timedwait_absolute_whole_ticks),
         T(test_irq_wakes_thread),
         T(test_mutex_owner_checks),
         T(test_priority_inheritance),
