@@ -226,6 +226,15 @@ int32_t k_block(struct k_waitq *wq, k_ticks_t timeout)
     return k_block_commit();
 }
 
+int32_t k_block_or_refuse(struct k_waitq *wq, k_ticks_t timeout)
+{
+    if (timeout == K_NO_WAIT)
+        return K_EAGAIN;
+    if (k_in_isr())
+        return K_EISR;
+    return k_block(wq, timeout);
+}
+
 void k_wake(struct k_thread *t, int32_t result)
 {
     if (t->state != K_THREAD_BLOCKED)
