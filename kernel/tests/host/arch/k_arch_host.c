@@ -142,9 +142,13 @@ void host_raise_irq(unsigned vector)
     k_isr_run(vector);
 }
 
+size_t host_console_writes_in_isr;
+
 size_t k_console_write(const char *s, size_t len)
 {
     size_t room = HOST_CONSOLE_SIZE - 1u - host_console_len;
+    if (k_in_isr())
+        host_console_writes_in_isr++;
     if (len > room)
         len = room;
     memcpy(host_console + host_console_len, s, len);
@@ -160,6 +164,7 @@ void k_console_write_sync(const char *s, size_t len)
 
 void host_console_clear(void)
 {
+    host_console_writes_in_isr = 0;
     host_console_len = 0;
     host_console[0] = '\0';
 }
