@@ -8,9 +8,7 @@ Environment (set by `make check-firmware-boot`):
   CROSS_PREFIX  m68k-linux-gnu- (objdump, nm, readelf)
   FW_ICOUNT     the -icount setting `make run` uses
 """
-import ctypes
 import os
-import signal
 import re
 import select
 import subprocess
@@ -21,14 +19,8 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "emu" / "tests"))
-from qtestlib import qmp_connect  # noqa: E402  (the shared QMP client, qemu.qmp)
+from qtestlib import _die_with_parent, qmp_connect  # noqa: E402  (shared with the emulator tests)
 
-
-def _die_with_parent():
-    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
-    so a killed or crashed test run never leaves an emulator spinning (under
-    -icount sleep=off an idle guest keeps a host core busy)."""
-    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
