@@ -28,6 +28,7 @@
 #define KTEST_MEASURE   10
 #define KTEST_OVERLOAD  11
 #define KTEST_TCBGUARD  12
+#define KTEST_NESTING   13
 
 #define STACK_BYTES 2048u
 K_STACK_DEFINE(stack_main, STACK_BYTES);
@@ -694,6 +695,90 @@ static void *controller(void *arg)
                     sizeof victim.stack, 5);
     k_sleep_ticks(50);
     k_printf("KTEST RESULT FAIL the system went on after the overflow\n");
+    return NULL;
+}
+/* ------------------------------------------------------------------ */
+#elif KTEST_MODE == KTEST_NESTING
+/* Interrupt nesting on the interrupt stack. Inside the tick handler (level
+ * 4), with all levels masked, a line goes into the console ring, which
+ * enables the DUART's transmit interrupt (level 5): it is pending. The free
+ * part of the interrupt stack below the handler is refilled, then the mask
+ * goes back to level 4 and the DUART interrupt nests at once, on the
+ * interrupt stack below the tick handler: the high-water mark afterwards
+ * shows how deep it went. The thread that was interrupted must not see any
+ * of it on its own stack. */
+#define NEST_SLACK 64u  /* bytes below the handler's frame left for its own calls */
+static volatile uint32_t depth_here, used_before, used_after;
+static volatile int armed;
+static const char nest_line[] = "KTEST nesting: this line leaves from inside the tick interrupt\n";
+
+static void refill_below(uint32_t *base, const volatile uint8_t *frame)
+{
+    size_t i;
+    for (i = K_STACK_GUARD_WORDS; (uintptr_t)&base[i] + NEST_SLACK < (uintptr_t)frame; i++)
+        base[i] = K_STACK_GUARD;
+}
+
+static void tick_prints(void)
+{
+    size_t words;
+    uint32_t irq, size, used;
+    uint32_t *base = (uint32_t *)(uintptr_t)k_arch_irq_stack(&words);
+    volatile uint8_t here = 0;
+    if (!armed)
+        return;
+    armed = 0;
+    depth_here = (uint32_t)((uintptr_t)(base + words) - (uintptr_t)&here);
+    irq = k_arch_irq_save();
+    (void)k_console_write(nest_line, sizeof nest_line - 1u);
+    refill_below(base, &here);
+    (void)k_irq_stack_usage(&size, &used);
+    used_before = used;
+    k_arch_irq_restore(irq);      /* the DUART's level 5 nests here */
+    (void)k_irq_stack_usage(&size, &used);
+    used_after = used;
+}
+
+static volatile uint32_t spins;
+static volatile int stop_spinning;
+static void *spinner(void *arg)
+{
+    (void)arg;
+    while (!stop_spinning)
+        spins++;
+    return NULL;
+}
+
+static void *controller(void *arg)
+{
+    struct k_thread_info info[4];
+    uint32_t spin_used = 0, size = 0, used = 0;
+    int i, n;
+    (void)arg;
+    k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
+    k_sleep_ticks(20);                /* the console is idle again */
+    k_board_tick_callback = tick_prints;
+    armed = 1;
+    k_sleep_ticks(10);                /* the spinner runs when the tick comes */
+    k_board_tick_callback = NULL;
+    stop_spinning = 1;
+    k_thread_join(&t_a, NULL, K_FOREVER);
+    n = k_thread_list(info, 4);
+    for (i = 0; i < n && i < 4; i++)
+        if (info[i].stack_base == stack_a)
+            spin_used = info[i].stack_used;
+    (void)k_irq_stack_usage(&size, &used);
+    k_printf("KTEST tick_depth=%lu used_before=%lu used_after=%lu "
+             "spinner_stack_used=%lu irq_stack_bytes=%lu\n",
+             (unsigned long)depth_here, (unsigned long)used_before, (unsigned long)used_after,
+             (unsigned long)spin_used, (unsigned long)size);
+    check(armed == 0, "the tick callback never ran");
+    check(used_before <= depth_here + NEST_SLACK, "the refill below the tick handler did not take");
+    check(used_after >= depth_here + NEST_SLACK + 32u,
+          "no interrupt nested below the tick handler on the interrupt stack");
+    check(used_after < size, "the interrupt stack overflowed");
+    check(spin_used < 256u, "the nested interrupt landed on the thread's stack");
+    finish();
     return NULL;
 }
 #else

@@ -154,6 +154,20 @@ def test_lower_thread_progresses_under_continuous_overrun():
     assert 0 < f["irq_stack_used"] < f["irq_stack_bytes"]
 
 
+def test_interrupts_nest_on_the_interrupt_stack():
+    """The DUART's level 5 taken inside the tick handler (level 4): it runs on
+    the interrupt stack below the tick handler's frame, not on the interrupted
+    thread's stack, and the system goes on."""
+    text = boot("nesting")
+    f = facts(text)
+    passed(text)
+    assert "KTEST nesting: this line leaves from inside the tick interrupt" in text
+    assert f["used_before"] <= f["tick_depth"] + 64          # the refill below the handler
+    assert f["used_after"] >= f["tick_depth"] + 64 + 32, f   # measured 176 (tick frame 49)
+    assert f["used_after"] < f["irq_stack_bytes"]
+    assert f["spinner_stack_used"] < 256                     # measured 116
+
+
 def test_control_block_overwrite_detected_and_halts():
     """A stack overflowing two words past its guard words into the control
     block below it: found at the thread's next switch, reported, halted."""
