@@ -217,7 +217,7 @@ static void k_board_pit_isr(void *arg)
 
 int k_board_init(void)
 {
-    console_init(); /* channel B at 57600 8N1, all DUART interrupts masked */
+    console_init(); /* channel B at CONSOLE_BAUD 8N1, all DUART interrupts masked */
     (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
     (void)k_sem_init(&k_console_space, 0, 1);
     k_console_lf_held = 0;
