@@ -301,7 +301,7 @@ int net_stats_print(void)
 {
     struct net_stats s;
     net_stats_get(&s);
-    k_printf("net: station %u\n", (unsigned)net_self);
+    k_printf("net: station %u, %lu baud\n", (unsigned)net_self, (unsigned long)radio_baud());
     k_printf("  frames sent %lu, received %lu, crc errors %lu, malformed %lu\n",
              (unsigned long)s.frames_sent, (unsigned long)s.frames_received,
              (unsigned long)s.crc_errors, (unsigned long)s.malformed);

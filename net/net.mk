@@ -44,14 +44,21 @@ check-net-target:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample
 	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
-	    -m "not interop" $(ROOT)/net/tests/target
+	    $(ROOT)/net/tests/target
 
-# The host peer speaking first to a fresh board: flaky (net/README.md, known bugs).
+# The host peer speaking first to a fresh board (the tests marked interop),
+# INTEROP_RUNS times in a row: the evidence that the bug of net/README.md
+# ("Fixed bugs") stays fixed. Niced, as every heavy run.
+INTEROP_RUNS ?= 10
 .PHONY: net-interop
 net-interop:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-interop -m interop $(ROOT)/net/tests/target
+	@p=0; f=0; for i in $$(seq $(INTEROP_RUNS)); do \
+	    if NETNODE_ELF=$(NETNODE_ELF) nice -n 19 $(PYTHON) -m pytest -q -p no:cacheprovider \
+	        -m interop $(ROOT)/net/tests/target >$(NET_BUILD)/interop-$$i.log 2>&1; \
+	    then p=$$((p + 1)); else f=$$((f + 1)); echo "run $$i failed: $(NET_BUILD)/interop-$$i.log"; fi; \
+	done; echo "net-interop: $$p of $(INTEROP_RUNS) runs passed"; [ $$f -eq 0 ]
 
 BOARDS   ?= 2
 MESSAGES ?= 5

@@ -8,6 +8,7 @@
 #define RADIO_OP_TX 0x02u     /* OP1 */
 #define RADIO_IP_CD 0x01u     /* IP0, low while a carrier is heard */
 #define RADIO_PAD   0x55u
+#define RADIO_CT_PRELOAD 6u   /* counter/timer: 3.6864 MHz / (2 x 6) = 16 x 19200 */
 
 static struct k_event *radio_ev;
 static uint32_t radio_rx_bit, radio_tx_bit;
@@ -20,6 +21,7 @@ static volatile size_t radio_tx_len, radio_tx_pos;
 static volatile uint8_t radio_tx_on;
 static uint8_t radio_tx_heard_carrier;
 static struct radio_stats radio_stats;
+static uint32_t radio_baud_rate;
 
 int radio_carrier(void)
 {
@@ -79,6 +81,26 @@ static void radio_isr(uint8_t pending, void *arg)
         radio_tx_chars();
 }
 
+/* 19200 baud (issue 11's default) for channel A: baud-rate set 2 has it
+ * (code 0xC) when the console chose set 2; set 1 has not, so then the
+ * counter/timer clocks channel A (CSR code 0xD, preload 6: X1 / 12 =
+ * 16 x 19200). Only if the counter/timer is taken as well, 9600 from set 1. */
+static uint8_t radio_csr(void)
+{
+    radio_baud_rate = 19200u;
+    if ((console_acr() & 0x80u) != 0u)
+        return 0xCCu;
+    if (duart_ct_baud_clock(RADIO_CT_PRELOAD) == 0)
+        return 0xDDu;
+    radio_baud_rate = 9600u;
+    return 0xBBu;
+}
+
+uint32_t radio_baud(void)
+{
+    return radio_baud_rate;
+}
+
 int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit)
 {
     radio_ev = ev;
@@ -93,8 +115,7 @@ int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit)
     DUART_REG(DUART_CRA) = DUART_CR_RESET_MR;
     DUART_REG(DUART_MRA) = 0x13u;       /* 8 data bits, no parity, RxRDY interrupt */
     DUART_REG(DUART_MRA) = 0x07u;       /* normal mode, 1 stop bit */
-    /* Set 2 code 0xC = 19200; set 1 has no 19200, its 0xB = 9600. */
-    DUART_REG(DUART_CSRA) = (console_acr() & 0x80u) != 0u ? 0xCCu : 0xBBu;
+    DUART_REG(DUART_CSRA) = radio_csr();
     DUART_REG(DUART_CRA) = DUART_CR_RX_ENABLE | DUART_CR_TX_ENABLE;
     duart_op_negate(RADIO_OP_TX);
     duart_op_assert(RADIO_OP_RX);

@@ -35,6 +35,8 @@ int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit);
 /* Starts sending len encoded bytes (copied); K_EBUSY while one is on air. */
 int radio_transmit(const uint8_t *bytes, size_t len);
 int radio_tx_busy(void);
+/* The baud rate radio_init chose (19200, or 9600 when no 19200 clock is free). */
+uint32_t radio_baud(void);
 /* Carrier detect: another station is on air. */
 int radio_carrier(void);
 /* Takes the oldest received frame: 1, or 0 when there is none. */

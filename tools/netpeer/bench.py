@@ -10,6 +10,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from netpeer.netnode import Board, MediumProcess, ROOT           # noqa: E402
 
 BENCH = re.compile(r"netnode: bench (\d+) of (\d+) messages of (\d+) bytes to \d+ in (\d+) ms")
+BAUD = re.compile(r"net: station \d+, (\d+) baud")
 
 
 def bench(elf, size, messages):
@@ -25,7 +26,7 @@ def bench(elf, size, messages):
         if not tx.wait_for("netnode: done", 300):
             raise RuntimeError("bench did not finish:\n" + tx.text())
         m = BENCH.search(tx.text())
-        return tuple(int(x) for x in m.groups())
+        return tuple(int(x) for x in m.groups()) + (int(BAUD.search(tx.text())[1]),)
     finally:
         for b in (tx, rx):
             if b:
@@ -37,13 +38,12 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--elf", default=os.path.join(ROOT, "build", "firmware", "netnode",
                                                   "netnode.elf"))
-    ap.add_argument("--baud", type=int, default=9600, help="the radio's rate (net/README.md)")
     a = ap.parse_args(argv)
-    ok, n, size, ms = bench(a.elf, 504, 4)
+    ok, n, size, ms, baud = bench(a.elf, 504, 4)
     bits = ok * size * 8 * 1000 / ms
     print(f"net-bench: goodput {ok}/{n} x {size} bytes in {ms} ms virtual = {bits:.0f} bit/s "
-          f"= {100 * bits / a.baud:.1f} % of {a.baud} baud")
-    ok2, n2, size2, ms2 = bench(a.elf, 32, 40)
+          f"= {100 * bits / baud:.1f} % of {baud} baud (the board's report)")
+    ok2, n2, size2, ms2, _ = bench(a.elf, 32, 40)
     print(f"net-bench: latency of a {size2}-byte reliable message: {ms2 / n2:.1f} ms "
           f"({ok2}/{n2} acknowledged in {ms2} ms virtual)")
     return 0 if ok == n and ok2 == n2 else 1

@@ -93,7 +93,7 @@ class MediumProcess:
     def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=()):
         cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
                "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
-               "--noise", str(noise)]
+               "--noise", str(noise), "--sync-ns", str(SYNC_NS)]
         if os.environ.get("NET_MEDIUM_TRACE"):
             cmd.append("--trace")
         for a, b in out_of_range:

@@ -3,16 +3,21 @@ import socket
 import threading
 import time
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO = 0, 1, 2
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE = 0, 1, 2, 4
 SEL_RX, SEL_TX = 1, 2
 
 
 class MediumTransport:
     """A station on emu/radio_medium.py (its 2-byte message protocol).
-    Transmissions are paced at the baud rate in wall time, so the air is
-    busy as long as on the boards."""
+    The medium plays our transmissions in the boards' virtual time when they
+    run in lock step (its docstring, "Pacing"), and tells us when one is over;
+    without boards in lock step we pace in wall time. Either way a transmission
+    occupies the air as long as on the boards, and transmit() returns when it
+    is over."""
 
     def __init__(self, path, baud=19200, connect_timeout=10.0):
+        if not 300 <= baud <= 255 * 300 or baud % 300:
+            raise ValueError(f"baud {baud}: a multiple of 300 up to {255 * 300}")
         deadline = time.monotonic() + connect_timeout
         while True:
             try:
@@ -29,9 +34,13 @@ class MediumTransport:
         self.lock = threading.Lock()
         self.closed = False
         self._pending = b""
+        self._tx_over = threading.Condition()
+        self._tx_over_count = 0
+        self._tx_paced = False
 
     def hello(self, station):
-        self._send(bytes((MSG_HELLO, station, MSG_CONTROL, SEL_RX)))
+        self._send(bytes((MSG_HELLO, station, MSG_PACE, self.baud // 300,
+                          MSG_CONTROL, SEL_RX)))
 
     def _send(self, data):
         with self.lock:
@@ -43,12 +52,22 @@ class MediumTransport:
                 self.closed = True    # the medium is gone: the air is silent
 
     def transmit(self, data):
+        air_time = len(data) * 10 / self.baud
         msgs = bytearray((MSG_CONTROL, SEL_TX))
         for b in data:
             msgs += bytes((MSG_DATA, b))
-        self._send(bytes(msgs))
-        time.sleep(len(data) * 10 / self.baud)
-        self._send(bytes((MSG_CONTROL, SEL_RX)))
+        msgs += bytes((MSG_CONTROL, SEL_RX))
+        start = time.monotonic()
+        with self._tx_over:
+            seen = self._tx_over_count
+            self._send(bytes(msgs))
+            # The medium's word that it is over; bounded, in case it is gone
+            # or the boards stall (then the air is silent anyway).
+            self._tx_over.wait_for(lambda: self._tx_over_count != seen or self.closed,
+                                   timeout=max(10.0, 50 * air_time))
+            paced = self._tx_paced and self._tx_over_count != seen
+        if not paced:
+            time.sleep(max(0.0, start + air_time - time.monotonic()))
 
     def read(self, timeout):
         """Bytes heard within timeout (b'' when none); None when the medium is gone."""
@@ -70,10 +89,17 @@ class MediumTransport:
                 out.append(data[i + 1])
             elif data[i] == MSG_CONTROL:
                 self.carrier = bool(data[i + 1])
+            elif data[i] == MSG_PACE:
+                with self._tx_over:
+                    self._tx_paced = bool(data[i + 1])
+                    self._tx_over_count += 1
+                    self._tx_over.notify_all()
         return bytes(out)
 
     def close(self):
-        self.closed = True
+        with self._tx_over:
+            self.closed = True
+            self._tx_over.notify_all()
         self.sock.close()
 
 

@@ -42,7 +42,7 @@ class Air:
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "interop: a host peer speaks first to a fresh board "
-                            "(known flaky, make net-interop)")
+                            "(make net-interop repeats these)")
 
 
 @pytest.fixture
