@@ -21,6 +21,12 @@ static volatile size_t radio_tx_len, radio_tx_pos;
 static volatile uint8_t radio_tx_on;
 static uint8_t radio_tx_heard_carrier;
 static struct radio_stats radio_stats;
+/* With FEC the ring holds undecoded codewords (fec.h). */
+static uint8_t radio_fec_on;
+static struct fec_rx radio_fec_rx;
+static struct fec_raw radio_raw_ring[RADIO_RX_FRAMES];
+static struct fec_raw radio_raw_scratch;
+static struct fec_raw radio_raw_taken;
 static uint32_t radio_baud_rate;
 
 int radio_carrier(void)
@@ -28,20 +34,27 @@ int radio_carrier(void)
     return (DUART_REG(DUART_IP) & RADIO_IP_CD) == 0u;
 }
 
+/* The next free ring slot, or the scratch slot when the ring is full. */
+static int radio_rx_complete(uint8_t b)
+{
+    int full = radio_ring_count >= RADIO_RX_FRAMES;
+    unsigned at = (radio_ring_head + radio_ring_count) % RADIO_RX_FRAMES;
+    if (radio_fec_on)
+        return fec_rx_byte(&radio_fec_rx, b, full ? &radio_raw_scratch : &radio_raw_ring[at]);
+    return frame_rx_byte(&radio_rx, b, full ? &radio_scratch : &radio_ring[at]);
+}
+
 static void radio_rx_chars(void)
 {
     uint8_t sr;
     while (((sr = DUART_REG(DUART_SRA)) & DUART_SR_RXRDY) != 0u) {
         uint8_t b = DUART_REG(DUART_RBA);
-        struct frame *slot = radio_ring_count < RADIO_RX_FRAMES
-            ? &radio_ring[(radio_ring_head + radio_ring_count) % RADIO_RX_FRAMES]
-            : &radio_scratch;
         if ((sr & DUART_SR_OVERRUN) != 0u) {
             radio_stats.rx_overruns++;
             DUART_REG(DUART_CRA) = DUART_CR_RESET_ERROR;
         }
-        if (frame_rx_byte(&radio_rx, b, slot)) {
-            if (slot == &radio_scratch) {
+        if (radio_rx_complete(b)) {
+            if (radio_ring_count >= RADIO_RX_FRAMES) {
                 radio_stats.rx_ring_full++;
             } else {
                 radio_ring_count++;
@@ -101,9 +114,11 @@ uint32_t radio_baud(void)
     return radio_baud_rate;
 }
 
-int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit)
+int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit, int fec)
 {
     radio_ev = ev;
+    radio_fec_on = fec != 0;
+    fec_rx_init(&radio_fec_rx);
     radio_rx_bit = rx_bit;
     radio_tx_bit = tx_bit;
     frame_rx_init(&radio_rx);
@@ -154,20 +169,33 @@ int radio_transmit(const uint8_t *bytes, size_t len)
 int radio_receive(struct frame *out)
 {
     uint32_t irq;
-    if (radio_ring_count == 0u)
-        return 0;
-    *out = radio_ring[radio_ring_head];
-    irq = k_arch_irq_save();
-    radio_ring_head = (uint8_t)((radio_ring_head + 1u) % RADIO_RX_FRAMES);
-    radio_ring_count--;
-    k_arch_irq_restore(irq);
-    return 1;
+    for (;;) {
+        if (radio_ring_count == 0u)
+            return 0;
+        if (radio_fec_on)
+            radio_raw_taken = radio_raw_ring[radio_ring_head];
+        else
+            *out = radio_ring[radio_ring_head];
+        irq = k_arch_irq_save();
+        radio_ring_head = (uint8_t)((radio_ring_head + 1u) % RADIO_RX_FRAMES);
+        radio_ring_count--;
+        k_arch_irq_restore(irq);
+        /* Correction takes far longer than a character: here, not in the ISR. */
+        if (!radio_fec_on || fec_frame_decode(&radio_raw_taken, out, &radio_stats.fec))
+            return 1;
+    }
 }
 
 void radio_stats_get(struct radio_stats *out, struct frame_rx_stats *framing)
 {
     uint32_t irq = k_arch_irq_save();
     *out = radio_stats;
+    out->fec_bad_count = radio_fec_rx.stats.bad_count;
     *framing = radio_rx.stats;
+    if (radio_fec_on) {
+        framing->bytes = radio_fec_rx.stats.bytes;
+        framing->frames = radio_stats.fec.frames;
+        framing->crc_errors = radio_stats.fec.bad_frames;
+    }
     k_arch_irq_restore(irq);
 }

@@ -9,7 +9,8 @@ import time
 MAGIC = b"NETNODE\0"
 MODES = {"soak": 1, "echo": 2, "bench": 3}
 # struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
-CONFIG = struct.Struct(">BBHHHII")
+CONFIG = struct.Struct(">BBHHHIIB3x")
+FLAG_FEC = 0x1
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # The firmware's usual deterministic setting (2^8 ns per instruction, idle
@@ -20,7 +21,7 @@ SYNC_NS = 500_000
 
 
 def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
-                 seed=1, linger_ms=3000):
+                 seed=1, linger_ms=3000, fec=False):
     data = bytearray(open(elf_in, "rb").read())
     at = data.find(MAGIC)
     if at < 0 or data.find(MAGIC, at + 1) >= 0:
@@ -28,7 +29,8 @@ def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, s
     mask = 0
     for p in peers:
         mask |= 1 << p
-    cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms)
+    cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms,
+                      FLAG_FEC if fec else 0)
     data[at + len(MAGIC):at + len(MAGIC) + CONFIG.size] = cfg
     with open(elf_out, "wb") as f:
         f.write(data)
@@ -90,10 +92,11 @@ class Board:
 
 
 class MediumProcess:
-    def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=()):
+    def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=(),
+                 byte_errors=0.0):
         cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
                "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
-               "--noise", str(noise), "--sync-ns", str(SYNC_NS)]
+               "--noise", str(noise), "--byte-errors", str(byte_errors), "--sync-ns", str(SYNC_NS)]
         if os.environ.get("NET_MEDIUM_TRACE"):
             cmd.append("--trace")
         for a, b in out_of_range:

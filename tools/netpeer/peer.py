@@ -4,8 +4,8 @@ import random
 import threading
 import time
 
-from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, Frame,
-                       FrameDecoder, Reassembly, encode_frame, fragments)
+from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, FecDecoder, Frame,
+                       FrameDecoder, Reassembly, encode_frame, encode_frame_fec, fragments)
 
 RTO, RTO_MAX, MAX_RETRIES = 0.25, 1.0, 8
 MAX_STATIONS = 16
@@ -16,13 +16,15 @@ class Unreachable(Exception):
 
 
 class Peer:
-    def __init__(self, transport, station, seed=None):
+    def __init__(self, transport, station, seed=None, fec=False):
+        """fec: Reed-Solomon frames (net/fec.h), as boards started with NET_FEC."""
         if not 0 <= station < MAX_STATIONS:
             raise ValueError(f"station {station}: 0..{MAX_STATIONS - 1}")
         self.t = transport
         self.station = station
         self.rng = random.Random(seed if seed is not None else station)
-        self.decoder = FrameDecoder()
+        self.decoder = FecDecoder() if fec else FrameDecoder()
+        self.encode = encode_frame_fec if fec else encode_frame
         self.tx_seq = [0] * MAX_STATIONS
         self.rx_last = [None] * MAX_STATIONS
         self.reasm = [Reassembly() for _ in range(MAX_STATIONS)]
@@ -50,7 +52,7 @@ class Peer:
 
     # -- air ------------------------------------------------------------------
     def _transmit(self, frame, is_ack=False):
-        data = encode_frame(frame) + b"\x55"
+        data = self.encode(frame) + b"\x55"
         with self.tx_lock:
             # Listen before talk, as net/mac.c (initial wait for data frames).
             if not is_ack:
