@@ -126,7 +126,10 @@ static uint32_t net_pump_tx(uint32_t now)
             net_mac_waiting = 0;
         }
         if (!net_mac_started) {
-            mac_begin(&net_mac);
+            if (link_is_burst(&net_link, f))
+                mac_begin_burst(&net_mac);
+            else
+                mac_begin(&net_mac);
             net_mac_started = 1;
         }
         action = mac_decide(&net_mac, radio_carrier(), f->type == LINK_ACK, &wait);

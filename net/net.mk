@@ -100,7 +100,8 @@ check-net-soak:
 net-bench:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@$(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec
 
 # ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
 #   make fuzz             frame parser and XDR decoder, FUZZ_RUNS (10^7) executions each
