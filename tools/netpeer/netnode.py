@@ -41,7 +41,10 @@ def qemu_binary():
 
 
 class Board:
-    """One emulated RoboCube whose radio joins the medium at `medium_sock`."""
+    """One emulated RoboCube whose radio joins the medium at `medium_sock`; or,
+    with medium_sock None, whose DUART channel A is a plain wire to a host
+    pseudo-terminal (pty_path(): what a serial adapter would be), with the
+    virtual clock near the wall clock (sleep=on) since no lock step paces it."""
 
     def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, sync_ns=SYNC_NS,
                  **config):
@@ -50,13 +53,17 @@ class Board:
         patch_config(elf, self.elf, station, **config)
         self.console = bytearray()
         self.lock = threading.Lock()
+        if medium_sock is None:
+            radio = ["-serial", "pty"]
+            icount = icount.replace("sleep=off", "sleep=on")
+        else:
+            radio = ["-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
+                     "-serial", "chardev:air",
+                     "-global", "mc68681-duart.radio-medium=on",
+                     "-global", f"mc68681-duart.radio-station={station}",
+                     "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
         cmd = [qemu_binary(), "-M", "robocube", "-icount", icount, "-kernel", self.elf,
-               "-display", "none", "-monitor", "none", "-serial", "stdio",
-               "-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
-               "-serial", "chardev:air",
-               "-global", "mc68681-duart.radio-medium=on",
-               "-global", f"mc68681-duart.radio-station={station}",
-               "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
+               "-display", "none", "-monitor", "none", "-serial", "stdio"] + radio
         self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                      stderr=subprocess.STDOUT)
         self.reader = threading.Thread(target=self._read, daemon=True)
@@ -80,6 +87,17 @@ class Board:
                 return marker in self.text()
             time.sleep(0.05)
         return False
+
+    def pty_path(self, timeout=10):
+        """The pseudo-terminal QEMU made for channel A (medium_sock None)."""
+        import re
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            m = re.search(r"char device redirected to (/dev/pts/\d+)", self.text())
+            if m:
+                return m[1]
+            time.sleep(0.05)
+        raise RuntimeError("no pty for channel A:\n" + self.text())
 
     def stop(self):
         if self.proc.poll() is None:

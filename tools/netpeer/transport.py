@@ -106,33 +106,53 @@ class MediumTransport:
 class SerialTransport:
     """A real BiM-433 module on a serial port (pyserial). The module's select
     lines are wired to RTS (TX select) and DTR (RX select) on a host adapter,
-    carrier detect to CD; without them the adapter must be hard-wired."""
+    carrier detect to CD. A port without modem lines (a pseudo-terminal, a
+    3-wire adapter with the module hard-wired) works too: then the selects are
+    not driven and the carrier reads as absent (modem_lines is False)."""
 
     def __init__(self, device, baud=19200):
         import serial                 # pyserial: only needed for real hardware
         self.port = serial.Serial(device, baud, timeout=0.1)
         self.baud = baud
+        self.modem_lines = True
 
     @property
     def carrier(self):
+        if not self.modem_lines:
+            return False
         try:
             return bool(self.port.cd)
         except OSError:
             return False
 
+    def _selects(self, rx, tx):
+        if not self.modem_lines:
+            return
+        try:
+            self.port.dtr, self.port.rts = rx, tx
+        except OSError:               # no modem control on this port (e.g. a pty)
+            self.modem_lines = False
+
     def hello(self, station):
-        self.port.dtr = True
-        self.port.rts = False
+        self._selects(True, False)
 
     def transmit(self, data):
-        self.port.dtr, self.port.rts = False, True
+        self._selects(False, True)
         self.port.write(data)
         self.port.flush()
-        self.port.dtr, self.port.rts = True, False
+        # flush() returns when the driver took the bytes; the last ones are
+        # still in the UART: wait their air time before un-keying.
+        time.sleep(len(data) * 10 / self.baud)
+        self._selects(True, False)
 
     def read(self, timeout):
-        self.port.timeout = timeout
-        return self.port.read(4096)
+        """Bytes heard within timeout (b'' when none); None when the port is gone."""
+        import serial
+        try:
+            self.port.timeout = timeout
+            return self.port.read(4096)
+        except (serial.SerialException, OSError, TypeError):
+            return None
 
     def close(self):
         self.port.close()
