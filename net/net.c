@@ -318,7 +318,7 @@ int net_stats_print(void)
 {
     struct net_stats s;
     net_stats_get(&s);
-    k_printf("net: station %u, %lu baud\n", (unsigned)net_self, (unsigned long)radio_baud());
+    k_printf("net: station %u\n", (unsigned)net_self);
     k_printf("  frames sent %lu, received %lu, crc errors %lu, malformed %lu\n",
              (unsigned long)s.frames_sent, (unsigned long)s.frames_received,
              (unsigned long)s.crc_errors, (unsigned long)s.malformed);
@@ -330,6 +330,7 @@ int net_stats_print(void)
              (unsigned long)s.delivered, (unsigned long)s.duplicates,
              (unsigned long)s.unreachable, (unsigned long)s.port_overflows,
              (unsigned long)s.rx_overruns);
+    k_printf("  radio %lu baud%s\n", (unsigned long)radio_baud(), net_fec ? ", fec" : "");
     if (net_fec)
         k_printf("  fec: bytes corrected %lu, frames beyond the code %lu\n",
                  (unsigned long)s.fec_corrected, (unsigned long)s.fec_failed);

@@ -104,9 +104,11 @@ net-bench:
 	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec
 
 # ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
-#   make fuzz             frame parser and XDR decoder, FUZZ_RUNS (10^7) executions each
+#   make fuzz             frame parser, XDR decoder, FEC receiver+decoder: FUZZ_RUNS (10^7)
+#                         executions each (the FEC one FUZZ_RUNS / NET_FUZZ_FEC_DIV)
 #   make check-net-fuzz   the same, 2 x 10^5 executions each (suite net-fuzz)
-#   make check-net-cbmc   the memory-safety proofs (suite net-cbmc)
+#   make check-net-cbmc   the memory-safety proofs (suite net-cbmc): frame receiver,
+#                         XDR decoder, FEC receiver, Reed-Solomon decoder, GF(256)
 NET_FUZZ_CC    ?= clang-14
 NET_FUZZ_FLAGS := -std=c99 -O1 -g -I$(ROOT) -fsanitize=fuzzer,address,undefined \
                   -fno-sanitize-recover=all
@@ -158,11 +160,28 @@ XDR_BOUND ?= 40
 NET_CBMC_XDR := --function harness $(NET_CBMC_CHECKS) --unwind $$(($(XDR_BOUND) + 6)) \
                 --unwinding-assertions -DXDR_BOUND=$(XDR_BOUND) -I $(ROOT) \
                 net/proofs/xdr_decode_harness.c net/xdr.c
+# The FEC receiver (interrupt half): the same induction over byte sequences.
+NET_CBMC_FEC_RX := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 260 \
+                   --unwinding-assertions -I $(ROOT) net/proofs/fec_rx_harness.c net/fec.c \
+                   net/rs.c net/crc16.c
+# The Reed-Solomon decoder on every 28-byte codeword, GF(256) over-approximated
+# (RS_GF_ABSTRACT, see rs.c) ...
+NET_CBMC_RS_DECODE := --function harness $(NET_CBMC_CHECKS) --unwind 40 \
+                      --unwindset gf_init.0:256,gf_init.1:256 --unwinding-assertions \
+                      -DRS_GF_ABSTRACT -I $(ROOT) net/proofs/rs_decode_harness.c net/rs.c
+# ... and the real GF(256) operations in bounds for every operand.
+NET_CBMC_RS_GF := --function harness $(NET_CBMC_CHECKS) --unwind 256 --unwinding-assertions \
+                  -I $(ROOT) net/proofs/rs_gf_harness.c
+NET_CBMC_RUNS := FRAME XDR FEC_RX RS_DECODE RS_GF
 check-net-cbmc:
 	@$(SETUP) cbmc
-	@p=0; f=0; for run in FRAME XDR; do \
-	    if [ $$run = FRAME ]; then args="$(NET_CBMC_FRAME)"; else args="$(NET_CBMC_XDR)"; fi; \
-	    out=$$($(NET_CBMC) $$args 2>&1); \
+	@p=0; f=0; for run in $(NET_CBMC_RUNS); do \
+	    case $$run in \
+	        FRAME) args="$(NET_CBMC_FRAME)";; XDR) args="$(NET_CBMC_XDR)";; \
+	        FEC_RX) args="$(NET_CBMC_FEC_RX)";; RS_DECODE) args="$(NET_CBMC_RS_DECODE)";; \
+	        RS_GF) args="$(NET_CBMC_RS_GF)";; \
+	    esac; \
+	    out=$$(nice -n 19 $(NET_CBMC) $$args 2>&1); \
 	    echo "$$out" | grep -E "^\*\*|VERIFICATION" | sed "s/^/net-cbmc $$run: /"; \
 	    if echo "$$out" | grep -q "VERIFICATION SUCCESSFUL"; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
 	done; $(call record,net-cbmc,$$p,$$f); [ $$f -eq 0 ]

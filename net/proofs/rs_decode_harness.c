@@ -1,8 +1,10 @@
-/* CBMC: the Reed-Solomon decoder of the FEC frames (rs_decode, FEC_NSYM
- * parity bytes, FEC_N-byte codewords, as fec_frame_decode calls it) reads
- * and writes only the codeword and its own arrays, with no overflow, for
- * EVERY content of the codeword (radio bytes); its result is -1 or at most
- * FEC_NSYM / 2 corrections. */
+/* CBMC: the Reed-Solomon decoder of the FEC frames (rs_decode with FEC_NSYM
+ * parity bytes on FEC_N-byte codewords, as fec_frame_decode calls it) reads
+ * and writes only the codeword and its own arrays, without overflow, for
+ * EVERY content of the codeword, and returns -1 or at most FEC_NSYM / 2.
+ * Built with RS_GF_ABSTRACT: each GF(256) operation returns any byte (see
+ * rs.c), a sound over-approximation for memory safety that keeps the proof
+ * small; rs_gf_harness.c proves the real operations in bounds. */
 #include <stdint.h>
 #include "net/fec.h"
 #include "net/rs.h"

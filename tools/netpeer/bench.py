@@ -10,7 +10,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from netpeer.netnode import Board, MediumProcess, ROOT           # noqa: E402
 
 BENCH = re.compile(r"netnode: bench (\d+) of (\d+) messages of (\d+) bytes to \d+ in (\d+) ms")
-BAUD = re.compile(r"net: station \d+, (\d+) baud")
+BAUD = re.compile(r"  radio (\d+) baud")
 
 
 def bench(elf, size, messages, fec=False):
