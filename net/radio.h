@@ -33,8 +33,8 @@ struct radio_stats {
     uint32_t fec_bad_count;    /* with FEC: no agreed codeword count */
 };
 
-/* Sets up channel A at 19200 baud (9600 if the console chose baud-rate set 1,
- * which has no 19200), RX select on; good frames set rx_bit in ev, finished
+/* Sets up channel A at 19200 baud (baud-rate set 2 if the console chose it,
+ * else the counter/timer; 9600 only if that is taken too), RX select on; good frames set rx_bit in ev, finished
  * transmissions set tx_bit; fec: frames are fec.h's (the interrupt collects
  * codewords, radio_receive corrects them). 0, or a negative K_E* code. */
 int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit, int fec);
