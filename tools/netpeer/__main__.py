@@ -26,7 +26,11 @@ def main(argv=None):
     l.add_argument("--count", type=int, default=0, help="stop after this many (0: forever)")
     l.add_argument("--timeout", type=float, default=None)
     a = ap.parse_args(argv)
-    t = MediumTransport(a.socket, a.baud) if a.socket else SerialTransport(a.serial, a.baud)
+    try:
+        t = MediumTransport(a.socket, a.baud) if a.socket else SerialTransport(a.serial, a.baud)
+    except (OSError, ValueError) as e:            # pyserial's SerialException is an OSError
+        print(f"netpeer: cannot reach the air at {a.socket or a.serial}: {e}", file=sys.stderr)
+        return 2
     with Peer(t, a.station, fec=a.fec) as p:
         if a.cmd == "send":
             try:

@@ -151,7 +151,7 @@ class SerialTransport:
         try:
             self.port.timeout = timeout
             return self.port.read(4096)
-        except (serial.SerialException, OSError, TypeError):
+        except (serial.SerialException, OSError):
             return None
 
     def close(self):
