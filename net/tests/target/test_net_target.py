@@ -32,6 +32,7 @@ def test_two_boards_deliver_everything(air):
         assert sent == (6, 0), b.text()
         assert per[other] == (6, 0, 0), b.text()
         assert "crc errors 0" in b.text()
+        assert "radio 19200 baud" in b.text()       # the counter/timer clocks channel A
 
 
 def test_three_boards_share_the_channel(air):
