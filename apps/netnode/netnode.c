@@ -49,7 +49,7 @@ volatile const struct netnode_config netnode_config __attribute__((used, aligned
 
 static struct netnode_config cfg;
 static struct k_thread echo_thread, soak_rx_thread, sink_thread;
-K_STACK_DEFINE(sink_stack, 1024);
+K_STACK_DEFINE(sink_stack, 1536);   /* 480 B own + 2 nested interrupts of 504 B (make stack) */
 K_STACK_DEFINE(echo_stack, 2048);
 K_STACK_DEFINE(soak_rx_stack, 2048);
 K_STACK_DEFINE(main_stack, 2048);
