@@ -158,6 +158,25 @@ void duart_acr_ipchange(uint8_t ip_mask)
     k_arch_irq_restore(irq);
 }
 
+int duart_ct_baud_clock(uint16_t preload)
+{
+    uint32_t irq;
+    if (preload == 0u)
+        return -1;
+    irq = k_arch_irq_save();
+    if ((k_duart_acr & 0x70u) != 0u) {
+        k_arch_irq_restore(irq);
+        return -1;
+    }
+    k_duart_acr = (uint8_t)(k_duart_acr | 0x60u);
+    DUART_REG(DUART_ACR) = k_duart_acr;
+    DUART_REG(DUART_CTUR) = (uint8_t)(preload >> 8);
+    DUART_REG(DUART_CTLR) = (uint8_t)(preload & 0xFFu);
+    (void)DUART_REG(DUART_START_COUNTER);
+    k_arch_irq_restore(irq);
+    return 0;
+}
+
 size_t k_console_write(const char *s, size_t len)
 {
     size_t done = 0;
