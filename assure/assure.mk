@@ -138,7 +138,7 @@ check-load-independence:
 .PHONY: check-wp-step-limits
 check-wp-step-limits:
 	@$(SETUP) frama-c
-	@WP_PROVERS=$(WP_PROVERS) WP_STEPS=$(WP_STEPS) $(ASSURE_PY)/wp_step_limits.sh $(RESULTS)/wp-step-limits.txt
+	@WP_PROVERS=$(WP_PROVERS) WP_STEPS=$(WP_STEPS) WP_STEPS_Z3=$(WP_STEPS_Z3) $(ASSURE_PY)/wp_step_limits.sh $(RESULTS)/wp-step-limits.txt
 
 # ---------------------------------------------------------------- WP machine models
 # The full WP run once per machine model, each gated like make prove

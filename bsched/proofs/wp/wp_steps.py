@@ -5,12 +5,13 @@ make prove limits every prover call by steps (-wp-steps, WP_STEPS in wp.mk), so
 that the verdict does not depend on the machine's speed or load; the wall-clock
 timeout is only a backstop. This script reads the WP log(s) of a run made with a
 generous limit (make wp-calibrate) and prints, per prover, the goals it proved,
-the most steps and the longest time one of them took, and the limit to set:
-MARGIN times the largest count over all provers (one -wp-steps value applies to
-every prover), rounded up to two significant digits. It exits 1 when a goal was
-not proven (a calibration must start from a proven run) or when --limit is given
-and the run used more than limit / MARGIN steps (the set limit no longer keeps
-its margin: re-calibrate).
+the most steps and the longest time one of them took, and the limits to set:
+MARGIN times the largest count, rounded up to two significant digits, once for
+cvc4 and cvc5 (WP_STEPS, -wp-steps) and once for Z3 (WP_STEPS_Z3: its units are
+much cheaper, prover-steps.sh). It exits 1 when a goal was not proven (a
+calibration must start from a proven run) or when --limit / --limit-z3 is given
+and the run used more than limit / MARGIN steps (the limit no longer keeps its
+margin: re-calibrate).
 
 Log lines read (Frama-C 25, -wp-verbose 1):
   [wp] [CVC4 1.8] Goal typed_f_ensures : Valid (Qed:6ms) (60ms) (20000)
@@ -20,7 +21,7 @@ Log lines read (Frama-C 25, -wp-verbose 1):
 A goal that failed in one log and was proven in another counts as proven (a goal
 that hit the wall-clock backstop can be re-run alone with a longer one).
 
-usage: wp_steps.py LOG... [--margin M] [--limit N] [--timeout S]
+usage: wp_steps.py LOG... [--margin M] [--limit N] [--limit-z3 N] [--timeout S]
 """
 import argparse
 import math
@@ -106,12 +107,15 @@ def main():
     ap.add_argument("logs", nargs="+")
     ap.add_argument("--margin", type=float, default=2.0)
     ap.add_argument("--limit", type=int, default=0, help="the WP_STEPS in force (checks its margin)")
+    ap.add_argument("--limit-z3", type=int, default=0, help="the WP_STEPS_Z3 in force")
     ap.add_argument("--timeout", type=float, default=0.0, help="the wall-clock backstop in force (s)")
     args = ap.parse_args()
     per_prover, not_proven, cut_by_steps = parse(args.logs)
     rc = 0
     print("%-22s %6s %12s  %-40s %8s" % ("prover", "goals", "max steps", "(goal)", "max time"))
-    overall = 0
+    # Two limits: WP_STEPS (-wp-steps) for cvc4 and cvc5, WP_STEPS_Z3 for Z3, whose
+    # units are much cheaper (prover-steps.sh).
+    overall = {"WP_STEPS": 0, "WP_STEPS_Z3": 0}
     for prover in sorted(per_prover):
         p = per_prover[prover]
         print("%-22s %6d %12d  %-40s %7.2fs" % (prover, p["goals"], p["steps"], p["steps_goal"][:40], p["time"]))
@@ -119,10 +123,13 @@ def main():
             print("  %d goals proven by %s without a step count: the run was not made with "
                   "-wp-steps, or the driver does not read this prover's steps" % (p["no_steps"], prover))
             rc = 1
-        overall = max(overall, p["steps"])
+        var = "WP_STEPS_Z3" if prover.startswith("Z3") else "WP_STEPS"
+        overall[var] = max(overall[var], p["steps"])
     slowest = max([p["time"] for p in per_prover.values()] or [0.0])
-    suggested = round_up(overall * args.margin)
-    print("largest step count: %d; with margin %gx: WP_STEPS = %d" % (overall, args.margin, suggested))
+    suggested = {var: round_up(n * args.margin) for var, n in overall.items()}
+    print("with margin %gx: WP_STEPS = %d (cvc4, cvc5: largest count %d), WP_STEPS_Z3 = %d (largest %d)"
+          % (args.margin, suggested["WP_STEPS"], overall["WP_STEPS"], suggested["WP_STEPS_Z3"],
+             overall["WP_STEPS_Z3"]))
     if args.timeout:
         print("slowest proof: %.2f s; the wall-clock backstop %g s is %.0fx that"
               % (slowest, args.timeout, args.timeout / slowest if slowest else float("inf")))
@@ -132,14 +139,16 @@ def main():
         print("%d goals not proven (%d cut by the step limit): calibrate on a proven run"
               % (len(not_proven), len(cut_by_steps)))
         rc = 1
-    if args.limit:
-        if overall * args.margin > args.limit:
-            print("WP_STEPS = %d keeps less than the %gx margin over %d steps: set WP_STEPS = %d"
-                  % (args.limit, args.margin, overall, suggested))
+    for var, limit in (("WP_STEPS", args.limit), ("WP_STEPS_Z3", args.limit_z3)):
+        if not limit:
+            continue
+        if overall[var] * args.margin > limit:
+            print("%s = %d keeps less than the %gx margin over %d steps: set %s = %d"
+                  % (var, limit, args.margin, overall[var], var, suggested[var]))
             rc = 1
         else:
-            print("WP_STEPS = %d: %.1fx the largest step count (margin %gx kept)"
-                  % (args.limit, args.limit / overall if overall else float("inf"), args.margin))
+            print("%s = %d: %.1fx the largest step count (margin %gx kept)"
+                  % (var, limit, limit / overall[var] if overall[var] else float("inf"), args.margin))
     return rc
 
 
