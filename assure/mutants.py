@@ -526,13 +526,17 @@ def stage_wp(work, m):
     if g.group(1) == g.group(2):
         return False, 'WP %s/%s' % (g.group(1), g.group(2))
     failed = wp_failures(text)
+    # The kill is load-independent if some goal failed with no prover stopped by the clock.
     timeouts = [f for f in failed if any(a.endswith('Timeout') for a in f[1])]
+    steady = [f for f in failed if f not in timeouts]
     first = failed[0] if failed else ('?', [])
     why = 'WP %s/%s goals of %s; not proven: %s (%s)%s' % (
         g.group(1), g.group(2), m['func'], first[0].replace('typed_', ''), ', '.join(first[1]),
         ' and %d more' % (len(failed) - 1) if len(failed) > 1 else '')
-    if timeouts:
-        why += '; %d of them hit the wall-clock timeout (load-dependent)' % len(timeouts)
+    if timeouts and not steady:
+        why += '; every one hit the wall-clock timeout (load-dependent)'
+    elif timeouts:
+        why += '; %d of them hit the wall-clock backstop, the others not' % len(timeouts)
     return True, why
 
 
@@ -566,7 +570,8 @@ def cached(stage, fn, settings):
             r = json.load(open(path))
             return r['killed'], r['why'] + ' (cached)'
         killed, why = fn(work, m)
-        if killed != 'error' and 'timeout' not in why:   # no verdict, or one that hung on the clock: not kept
+        if killed != 'error' and 'load-dependent' not in why and 'timeout' not in why:
+            # (no verdict, or one that depends on the clock: not kept)
             os.makedirs(CACHE, exist_ok=True)
             with open(path, 'w') as f:
                 json.dump({'killed': killed, 'why': why, 'key': m['key']}, f)
