@@ -542,14 +542,18 @@ def stage_wp(work, m):
 
 # The proof stages' verdicts are kept in CACHE, one file per stage and digest of
 # everything the verdict depends on: the mutant's text, the stage's settings (CBMC
-# bounds, WP flags) and every file of the specification and the harnesses. A re-run
+# bounds, WP flags) and every file of the specification and of the stage's own folder
+# (bsched/proofs/cbmc or bsched/proofs/wp). A re-run
 # (after the unit stage is re-done, say) then costs nothing for an unchanged mutant.
 CACHE = os.path.join(ROOT, 'build', 'mutants', 'cache')
 
 
-def proof_inputs_digest():
+PROOF_INPUTS = {'cbmc': ('bsched/spec', 'bsched/proofs/cbmc'), 'wp': ('bsched/spec', 'bsched/proofs/wp')}
+
+
+def proof_inputs_digest(stage):
     h = hashlib.sha1()
-    for d in ('bsched/spec', 'bsched/proofs/cbmc', 'bsched/proofs/wp'):
+    for d in PROOF_INPUTS[stage]:
         for base, _, files in sorted(os.walk(os.path.join(ROOT, d))):
             for f in sorted(files):
                 if f.endswith(('.c', '.h', '.mk', '.sh', '.drv', 'Makefile', '.common')):
@@ -561,7 +565,7 @@ def proof_inputs_digest():
 
 def cached(stage, fn, settings):
     """fn wrapped with the verdict cache: fn(work, m) -> (killed, why)."""
-    inputs = proof_inputs_digest()
+    inputs = proof_inputs_digest(stage)
 
     def run(work, m):
         key = hashlib.sha1((stage + '\0' + settings() + '\0' + inputs + '\0' + m['text']).encode()).hexdigest()
