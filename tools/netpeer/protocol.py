@@ -48,7 +48,15 @@ def encode_frame(f):
     return PREAMBLE + bytes((FLAG,)) + _stuff(body + bytes((c >> 8, c & 0xFF))) + bytes((FLAG,))
 
 
-class FrameDecoder:
+class ByteReceiver:
+    """A receiver fed one byte at a time: byte(b) returns a completed frame or None."""
+
+    def feed(self, data):
+        """Returns the good frames completed by data."""
+        return [f for f in map(self.byte, data) if f is not None]
+
+
+class FrameDecoder(ByteReceiver):
     """The receive state machine of net/frame.c, one byte at a time."""
     HUNT, BODY, ESCAPED = 0, 1, 2
 
@@ -56,15 +64,6 @@ class FrameDecoder:
         self.state = self.HUNT
         self.body = bytearray()
         self.frames = self.crc_errors = self.malformed = 0
-
-    def feed(self, data):
-        """Returns the good frames completed by data."""
-        out = []
-        for b in data:
-            f = self.byte(b)
-            if f is not None:
-                out.append(f)
-        return out
 
     def byte(self, b):
         if b == FLAG:
@@ -184,7 +183,7 @@ def encode_frame_fec(f):
     return bytes(out)
 
 
-class FecDecoder:
+class FecDecoder(ByteReceiver):
     """The receiver of net/fec.c: collects a frame's codewords after the flag
     and the voted codeword count, then corrects them with reedsolo."""
 
@@ -192,14 +191,6 @@ class FecDecoder:
         self.state, self.copies, self.raw, self.need = "hunt", [], bytearray(), 0
         self.frames = self.corrected = self.uncorrectable = self.bad_frames = 0
         self.bad_count = 0
-
-    def feed(self, data):
-        out = []
-        for b in data:
-            f = self.byte(b)
-            if f is not None:
-                out.append(f)
-        return out
 
     def byte(self, b):
         if self.state == "count":
