@@ -301,16 +301,37 @@ def generate(src):
 
 HOST_CC = os.environ.get('HOST_CC', 'cc')
 SAN_FLAGS = ['-fsanitize=address,undefined', '-fno-sanitize-recover=all', '-fno-omit-frame-pointer']
+# A mutant that makes a test program hang is killed by a timeout: 20x the time the
+# program took on the original bsched.c, at least UNIT_TIMEOUT s (both measured on the
+# same, possibly loaded, machine, so the margin holds under load). The original gets
+# BASELINE_TIMEOUT s.
 UNIT_TIMEOUT = 20
+BASELINE_TIMEOUT = 600
+TIMEOUTS = {}
 
 
 def write_mutant(work, m):
     d = os.path.join(work, m['hash'])
     os.makedirs(d, exist_ok=True)
     path = os.path.join(d, 'bsched.c')
-    with open(path, 'w') as f:
-        f.write(m['text'])
+    try:
+        same = open(path).read() == m['text']
+    except OSError:
+        same = False
+    if not same:                      # an unchanged file keeps its time: builds are reused
+        with open(path, 'w') as f:
+            f.write(m['text'])
     return d, path
+
+
+def newest_input(prog):
+    """Newest modification time of what a test program is built from, besides the mutant."""
+    name, path, incs, extra = prog
+    files = [path] + extra
+    for inc in incs + ['-I' + os.path.join(ROOT, 'bsched')]:
+        d = inc[2:]
+        files += [os.path.join(d, f) for f in os.listdir(d) if f.endswith('.h')]
+    return max(os.path.getmtime(f) for f in files)
 
 
 def test_programs():
@@ -366,22 +387,28 @@ def baseline(work):
         if r.returncode != 0:
             print('mutants: left out %s: does not build against the original (%s)' % (prog[0], r.stderr[-200:]))
             continue
+        t0 = time.time()
         try:
-            ok = subprocess.run([exe], capture_output=True, env=env, timeout=UNIT_TIMEOUT).returncode == 0
+            r = subprocess.run([exe], capture_output=True, text=True, env=env, timeout=BASELINE_TIMEOUT)
+            ok, why = r.returncode == 0, 'exit %d: %s' % (r.returncode, (r.stdout + r.stderr)[-300:])
         except subprocess.TimeoutExpired:
-            ok = False
+            ok, why = False, 'timeout %d s' % BASELINE_TIMEOUT
         if not ok:
-            print('mutants: left out %s: fails on the original bsched.c' % prog[0])
+            print('mutants: left out %s: fails on the original bsched.c (%s)' % (prog[0], why))
             continue
+        TIMEOUTS[prog[0]] = max(UNIT_TIMEOUT, 20 * (time.time() - t0))
         TESTS.append(prog)
-    print('mutants: unit stage runs %s' % ', '.join(p[0] for p in TESTS))
+    print('mutants: unit stage runs %s' % ', '.join('%s (timeout %.0f s)' % (p[0], TIMEOUTS[p[0]]) for p in TESTS))
 
 
 def stage_compile(work, m):
     """Builds every test program against the mutant."""
     d, path = write_mutant(work, m)
     for prog in TESTS:
-        r = build_test(prog, path, os.path.join(d, prog[0]))
+        exe = os.path.join(d, prog[0])
+        if os.path.exists(exe) and os.path.getmtime(exe) > max(os.path.getmtime(path), newest_input(prog)):
+            continue                  # built from this very mutant and these sources before
+        r = build_test(prog, path, exe)
         if r.returncode != 0:
             return False, r.stderr[-400:]
     return True, ''
@@ -394,9 +421,9 @@ def stage_unit(work, m):
         name = prog[0]
         try:
             r = subprocess.run([os.path.join(d, name)], capture_output=True, text=True,
-                               timeout=UNIT_TIMEOUT, env=env)
+                               timeout=TIMEOUTS[name], env=env)
         except subprocess.TimeoutExpired:
-            return True, '%s: timeout %d s' % (name, UNIT_TIMEOUT)
+            return True, '%s: timeout %d s' % (name, TIMEOUTS[name])
         if r.returncode == 0:
             continue
         failed = re.findall(r'\[  FAILED  \] (\w+)', r.stdout)
@@ -429,11 +456,12 @@ def stage_cbmc(work, m):
                 'SOURCES=%s/%s_harness.c %s' % (hdir, harness, path)] + \
                ['%s=%s' % kv for kv in bounds.items()]
         r = subprocess.run(LOCK + args, capture_output=True, text=True)
-        res = ''
         try:
             res = open(os.path.join(out, 'result.txt')).read().strip()
         except OSError:
-            res = 'no result (make exited %d)' % r.returncode
+            # The harness did not run (a build or set-up failure): no verdict, not a kill.
+            return 'error', '%s: no result (make exited %d): %s' % (
+                harness, r.returncode, ' '.join((r.stdout + r.stderr).split())[-200:])
         if not res.startswith('PASS'):
             log = os.path.join(out, 'cbmc.log')
             failed = []
@@ -443,29 +471,116 @@ def stage_cbmc(work, m):
     return False, ''
 
 
-def wp_flags():
-    r = subprocess.run(['make', '--no-print-directory', '-s', '-C', ROOT,
-                        '--eval', 'print-wp-flags: ; @echo $(WP_FLAGS)', 'print-wp-flags'],
+def make_vars(*names):
+    """Values of make variables of the top Makefile (WP_FLAGS, WHY3CONFIG, ...)."""
+    rule = 'print-vars: ; @' + ' && '.join('echo "$(%s)"' % n for n in names)
+    r = subprocess.run(['make', '--no-print-directory', '-s', '-C', ROOT, '--eval', rule, 'print-vars'],
                        capture_output=True, text=True)
-    return r.stdout.strip()
+    values = r.stdout.split('\n')
+    return [v.strip() for v in values[:len(names)]]
+
+
+# A WP goal line: [wp] [Prover] Goal NAME : STATUS (...); after [Failed], one line per prover.
+WP_GOAL = re.compile(r'^\[wp\] \[(?P<prover>[^\]]+)\] Goal (?P<goal>\S+)(?: : (?P<status>[A-Za-z ]+?))?(?: \(.*)?$')
+WP_ATTEMPT = re.compile(r'^  (?P<prover>[A-Za-z][^:]*): (?P<status>[A-Za-z ]+?)(?: \(.*)?$')
+
+
+def wp_failures(text):
+    """Goals WP did not prove, each with what every prover said:
+    [(goal, ['CVC4 1.8: Step limit', ...])]."""
+    failed, cur = [], None
+    for line in text.splitlines():
+        m = WP_GOAL.match(line)
+        if m:
+            cur = None
+            if m.group('prover') == 'Failed' or (m.group('status') or 'Valid') != 'Valid':
+                cur = (m.group('goal'), [] if m.group('prover') == 'Failed'
+                       else ['%s: %s' % (m.group('prover'), m.group('status'))])
+                failed.append(cur)
+            continue
+        a = WP_ATTEMPT.match(line)
+        if a and cur is not None:
+            cur[1].append('%s: %s' % (a.group('prover'), a.group('status')))
+    return failed
+
+
+# Functions make prove leaves out (-wp-skip-fct in wp.mk): WP says nothing about them.
+WP_NOT_PROVEN = {'bsched_run_cycle'}
 
 
 def stage_wp(work, m):
+    """WP on the mutated function alone, with make prove's flags (step limits
+    included). A goal that some prover lost only by the wall-clock timeout is a
+    kill that depends on the machine's speed: it is reported as such ('timeout')."""
+    if m['func'] in WP_NOT_PROVEN:
+        return False, 'not in the WP proof (bsched/proofs/README.md, Not proven)'
     d, path = write_mutant(work, m)
     log = os.path.join(d, 'wp.log')
-    cmd = ' '.join(LOCK) + ' frama-c %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (
-        wp_flags(), m['func'], path, log)
-    tools = os.environ.get('BSCHED_TOOLS') or os.path.join(
-        os.environ.get('XDG_CACHE_HOME') or os.path.expanduser('~/.cache'), 'bsched')
-    env = dict(os.environ, WHY3CONFIG=os.path.join(tools, 'why3', 'why3.conf'))
-    subprocess.run(cmd, shell=True, cwd=ROOT, env=env)
+    flags, why3config = make_vars('WP_FLAGS', 'WHY3CONFIG')
+    cmd = ' '.join(LOCK) + ' frama-c %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (flags, m['func'], path, log)
+    subprocess.run(cmd, shell=True, cwd=ROOT, env=dict(os.environ, WHY3CONFIG=why3config))
     text = open(log).read()
     g = re.search(r'Proved goals:\s*(\d+)\s*/\s*(\d+)', text)
     if not g:
         return True, 'frama-c rejects it: ' + ' '.join(text.splitlines()[-2:])[:150]
-    if g.group(1) != g.group(2):
-        return True, 'WP %s/%s goals of %s' % (g.group(1), g.group(2), m['func'])
-    return False, 'WP %s/%s' % (g.group(1), g.group(2))
+    if g.group(1) == g.group(2):
+        return False, 'WP %s/%s' % (g.group(1), g.group(2))
+    failed = wp_failures(text)
+    # The kill is load-independent if some goal failed with no prover stopped by the clock.
+    timeouts = [f for f in failed if any(a.endswith('Timeout') for a in f[1])]
+    steady = [f for f in failed if f not in timeouts]
+    first = failed[0] if failed else ('?', [])
+    why = 'WP %s/%s goals of %s; not proven: %s (%s)%s' % (
+        g.group(1), g.group(2), m['func'], first[0].replace('typed_', ''), ', '.join(first[1]),
+        ' and %d more' % (len(failed) - 1) if len(failed) > 1 else '')
+    if timeouts and not steady:
+        why += '; every one hit the wall-clock timeout (load-dependent)'
+    elif timeouts:
+        why += '; %d of them hit the wall-clock backstop, the others not' % len(timeouts)
+    return True, why
+
+
+# The proof stages' verdicts are kept in CACHE, one file per stage and digest of
+# everything the verdict depends on: the mutant's text, the stage's settings (CBMC
+# bounds, WP flags) and every file of the specification and of the stage's own folder
+# (bsched/proofs/cbmc or bsched/proofs/wp). A re-run
+# (after the unit stage is re-done, say) then costs nothing for an unchanged mutant.
+CACHE = os.path.join(ROOT, 'build', 'mutants', 'cache')
+
+
+PROOF_INPUTS = {'cbmc': ('bsched/spec', 'bsched/proofs/cbmc'), 'wp': ('bsched/spec', 'bsched/proofs/wp')}
+
+
+def proof_inputs_digest(stage):
+    h = hashlib.sha1()
+    for d in PROOF_INPUTS[stage]:
+        for base, _, files in sorted(os.walk(os.path.join(ROOT, d))):
+            for f in sorted(files):
+                if f.endswith(('.c', '.h', '.mk', '.sh', '.drv', 'Makefile', '.common')):
+                    h.update(f.encode())
+                    h.update(open(os.path.join(base, f), 'rb').read())
+    h.update(open(os.path.join(ROOT, 'bsched', 'bsched.h'), 'rb').read())
+    return h.hexdigest()
+
+
+def cached(stage, fn, settings):
+    """fn wrapped with the verdict cache: fn(work, m) -> (killed, why)."""
+    inputs = proof_inputs_digest(stage)
+
+    def run(work, m):
+        key = hashlib.sha1((stage + '\0' + settings() + '\0' + inputs + '\0' + m['text']).encode()).hexdigest()
+        path = os.path.join(CACHE, '%s-%s.json' % (stage, key))
+        if os.path.exists(path):
+            r = json.load(open(path))
+            return r['killed'], r['why'] + ' (cached)'
+        killed, why = fn(work, m)
+        if killed != 'error' and 'load-dependent' not in why and 'timeout' not in why:
+            # (no verdict, or one that depends on the clock: not kept)
+            os.makedirs(CACHE, exist_ok=True)
+            with open(path, 'w') as f:
+                json.dump({'killed': killed, 'why': why, 'key': m['key']}, f)
+        return killed, why
+    return run
 
 
 def load_equivalent():
@@ -485,11 +600,16 @@ def main():
     ap.add_argument('--sample', type=int, default=0, help='only N mutants, a fixed sample by key hash')
     ap.add_argument('--stages', default='unit,cbmc,wp')
     ap.add_argument('--jobs', type=int, default=2)
+    ap.add_argument('--proof-jobs', type=int, default=2, help='mutants at a time in the CBMC and WP stages')
     ap.add_argument('--out', default=os.path.join(ROOT, 'build/mutants'))
     ap.add_argument('--suite', help='write build/results/SUITE.txt')
     ap.add_argument('--only-survivors-of', metavar='REPORT',
                     help='re-run only the mutants a previous report lists as survivors')
+    ap.add_argument('--match', metavar='REGEX', help='only the mutants whose key matches REGEX')
+    ap.add_argument('--keys-from', metavar='FILE',
+                    help='only the mutants with an entry in FILE (key || reason), e.g. the survivors')
     a = ap.parse_args()
+    a.out = os.path.abspath(a.out)    # the CBMC stage runs make -C in each harness folder
     if a.cmd == 'tests':   # the unit test programs and what they need (assure/bigendian.sh)
         for name, path, incs, extra in test_programs():
             print('%s|%s|%s|%s' % (name, os.path.relpath(path, ROOT), ' '.join(incs),
@@ -508,10 +628,15 @@ def main():
         prev = json.load(open(a.only_survivors_of))
         keep = {r['key'] for r in prev['mutants'] if r['killed_by'] is None}
         muts = [m for m in muts if m['key'] in keep]
+    if a.match:
+        muts = [m for m in muts if re.search(a.match, m['key'])]
+    if a.keys_from:
+        keys = {l.rpartition(' || ')[0].strip() for l in open(a.keys_from)
+                if ' || ' in l and not l.startswith('#')}
+        muts = [m for m in muts if m['key'] in keys]
     stages = a.stages.split(',')
     work = os.path.join(a.out, 'work')
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
+    os.makedirs(work, exist_ok=True)   # kept: builds of unchanged mutants are reused
     t0 = time.time()
     baseline(work)
     if not TESTS:
@@ -520,6 +645,8 @@ def main():
     results = {}
 
     def first(m):
+        if 'unit' not in stages:          # a proof-only run (--keys-from the survivors)
+            return m, None, ''
         ok, err = stage_compile(work, m)
         if not ok:
             return m, 'uncompilable', err
@@ -551,53 +678,125 @@ def main():
                 time.sleep(5)
         timing['lock wait'] = time.time() - t1
         LOCK = []
-    for st, fn in (('cbmc', stage_cbmc), ('wp', stage_wp)):
+    # Each proof stage gets what the cheaper ones left, PROOF_JOBS mutants at a time
+    # (one heavy lock for all), smaller functions first; with MUTANTS_STAGE_DEADLINE
+    # (epoch seconds) a stage starts no new mutant after it, and those left are
+    # reported as not run (the cache keeps what was done: a re-run goes on from there).
+    deadline = float(os.environ.get('MUTANTS_STAGE_DEADLINE', '0'))
+    not_run = {}
+    errors = {}
+    size = {}
+    for t in tokenize(src):
+        size[t.func] = size.get(t.func, 0) + 1
+    for st, fn in (('cbmc', cached('cbmc', stage_cbmc, lambda: json.dumps(CBMC_RUNS))),
+                   ('wp', cached('wp', stage_wp, lambda: make_vars('WP_FLAGS')[0]))):
         if st not in stages:
             continue
         t1 = time.time()
-        for key, (m, by, why) in results.items():
-            if by is None:
-                killed, w = fn(work, m)
-                if killed:
-                    results[key] = (m, st, w)
+        todo = sorted([r[0] for r in results.values() if r[1] is None and r[0]['key'] not in not_run],
+                      key=lambda m: (size.get(m['func'], 0), m['line']))
+
+        def one(m, st=st, fn=fn):
+            if deadline and time.time() > deadline:
+                return m, None, None
+            killed, w = fn(work, m)
+            print('mutants: %-4s %-8s line %4d %s: %s' % (st, 'ERROR' if killed == 'error' else
+                                                       'killed' if killed else 'survived',
+                                                       m['line'], m['key'][:90], w[:160]), flush=True)
+            return m, killed, w
+        with cf.ThreadPoolExecutor(a.proof_jobs) as ex:
+            for m, killed, w in ex.map(one, todo):
+                if killed is None:
+                    not_run[m['key']] = st
+                elif killed == 'error':
+                    errors[m['key']] = (st, w)
+                    not_run[m['key']] = st
+                elif killed:
+                    results[m['key']] = (m, st, w)
         timing[st] = time.time() - t1
+    for key, (st, w) in errors.items():
+        print('mutants: ERROR in stage %s (no verdict): %s: %s' % (st, key, w))
+    if not_run:
+        print('mutants: %d mutants not run through every proof stage (%d errors, the rest '
+              'MUTANTS_STAGE_DEADLINE)' % (len(not_run), len(errors)))
     eq = load_equivalent()
     compiled = [r for r in results.values() if r[1] != 'uncompilable']
     killed = [r for r in compiled if r[1] is not None]
     survivors = [r for r in compiled if r[1] is None]
-    unexplained = [r for r in survivors if r[0]['key'] not in eq]
+    # Every survivor of the unit tests needs an entry (make check's sample runs the unit
+    # stage only), also those a proof stage kills: the entry says which one.
+    unit_survivors = [r for r in compiled if r[1] in (None, 'cbmc', 'wp')]
+    unexplained = [r for r in unit_survivors if r[0]['key'] not in eq]
+    proof_stages = [st for st in ('cbmc', 'wp') if st in stages]
+    # With every proof stage run, each entry's claim is checked against what they said:
+    # "killed by cbmc" / "killed by wp" (the first stage that kills it), else it survives.
+    mismatched = []
+    if proof_stages == ['cbmc', 'wp']:
+        for m, by, why in unit_survivors:
+            reason = eq.get(m['key'])
+            if reason is None or m['key'] in not_run:
+                continue
+            # "killed by cbmc or wp": a proof stage kills it, which one first not yet measured
+            claim = re.search(r'killed by (cbmc or wp|cbmc|wp)\b', reason, re.I)
+            expect = claim.group(1).lower() if claim else None
+            if not (expect == by or (expect == 'cbmc or wp' and by in ('cbmc', 'wp'))):
+                mismatched.append((m, by, why, expect))
     by_stage = {}
     for r in killed:
         by_stage[r[1]] = by_stage.get(r[1], 0) + 1
+    # Killed / tried per stage: each stage gets what the cheaper ones left.
+    per_stage = []
+    left = len(compiled)
+    for st in stages:
+        skipped = sum(1 for v in not_run.values() if v == st)
+        per_stage.append({'stage': st, 'tried': left - skipped, 'killed': by_stage.get(st, 0),
+                          'not_run': skipped, 'seconds': round(timing.get(st, 0.0))})
+        left -= by_stage.get(st, 0) + skipped
     os.makedirs(a.out, exist_ok=True)
     report = {'source': 'bsched/bsched.c', 'generated': len(results),
               'uncompilable': len(results) - len(compiled), 'compiled': len(compiled),
-              'killed': len(killed), 'killed_by': by_stage,
-              'survivors_equivalent': len(survivors) - len(unexplained),
-              'survivors_unexplained': len(unexplained), 'seconds': timing, 'stages': stages,
+              'killed': len(killed), 'killed_by': by_stage, 'per_stage': per_stage,
+              'survivors_equivalent': len([r for r in survivors if r[0]['key'] in eq]),
+              'survivors_unexplained': len(unexplained), 'entries_mismatched': len(mismatched),
+              'not_run': not_run,
+              'seconds': timing, 'stages': stages,
               'mutants': [{'key': m['key'], 'line': m['line'], 'hash': m['hash'], 'op': m['op'],
-                           'killed_by': by, 'why': why,
-                           'equivalent': eq.get(m['key']) if by is None else None}
+                           'killed_by': by, 'why': why, 'entry': eq.get(m['key'])}
                           for m, by, why in results.values()]}
-    name = 'sample' if a.sample else 'partial' if a.only_survivors_of else 'full'
+    name = 'sample' if a.sample else 'partial' if a.only_survivors_of or a.match or a.keys_from else 'full'
     with open(os.path.join(a.out, 'report-%s.json' % name), 'w') as f:
         json.dump(report, f, indent=1)
-    for m, by, why in sorted(results.values(), key=lambda r: r[0]['line']):
-        if by is None:
-            tag = 'EQUIVALENT' if m['key'] in eq else 'SURVIVED'
-            print('%-10s line %4d %s\n           %s' % (tag, m['line'], m['key'],
-                                                     eq.get(m['key'], 'no test, proof or reason kills it')))
+    for m, by, why in sorted(unit_survivors, key=lambda r: r[0]['line']):
+        entry = eq.get(m['key'])
+        if entry is None:
+            tag = 'SURVIVED' if by is None else 'NO ENTRY'
+            entry = 'no test, proof or reason kills it' if by is None else \
+                'killed by %s only (%s): add an entry "killed by %s: ..." for the unit-only sample' % (by, why, by)
+        else:
+            tag = 'EQUIVALENT' if by is None else 'KILLED-' + by.upper()
+        print('%-11s line %4d %s\n            %s' % (tag, m['line'], m['key'], entry))
+        if by is not None:
+            print('            measured: %s' % why)
+    for m, by, why, expect in mismatched:
+        print('MISMATCH   line %4d %s\n            the entry says %s, measured %s%s' % (
+            m['line'], m['key'], 'killed by ' + expect if expect else 'it survives every stage',
+            'killed by ' + by if by else 'it survives every stage', ': ' + why if why else ''))
     print('mutants of bsched.c: %d generated, %d do not compile, %d compiled' %
           (len(results), report['uncompilable'], len(compiled)))
-    print('killed %d / %d (%s); survivors: %d equivalent (assure/mutants-equivalent.txt), %d unexplained' %
+    for st in per_stage:
+        print('  stage %-5s killed %3d of %3d (%d s)%s' % (st['stage'], st['killed'], st['tried'], st['seconds'],
+                                                       ', %d not run' % st['not_run'] if st['not_run'] else ''))
+    print('killed %d / %d (%s); survivors: %d with an entry (assure/mutants-equivalent.txt), '
+          '%d without; %d entries contradicted by the proof stages' %
           (len(killed), len(compiled), ', '.join('%s %d' % kv for kv in sorted(by_stage.items())),
-           report['survivors_equivalent'], len(unexplained)))
+           report['survivors_equivalent'], len(unexplained), len(mismatched)))
     print('time: ' + ', '.join('%s %.0f s' % kv for kv in timing.items()))
+    bad = len(unexplained) + len(mismatched) + len(not_run)
     if a.suite:
         os.makedirs(os.path.join(ROOT, 'build/results'), exist_ok=True)
         with open(os.path.join(ROOT, 'build/results', a.suite + '.txt'), 'w') as f:
-            f.write('%d passed, %d failed\n' % (len(compiled) - len(unexplained), len(unexplained)))
-    return 1 if unexplained else 0
+            f.write('%d passed, %d failed\n' % (len(compiled) - bad, bad))
+    return 1 if bad else 0
 
 
 if __name__ == '__main__':

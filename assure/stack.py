@@ -13,13 +13,28 @@ and libgcc helpers that have no .ci (fixed sizes below), and walks the graph:
   k_thread_start calls; so the bound is conservative;
 - recursion (a cycle in the graph) makes the bound unknown: the check fails.
 
-Threads come from the sources: every k_thread_create(..., ENTRY, ARG, STACK,
-SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
+Threads come from the sources: every k_thread_create or board_spawn(..., ENTRY, ARG,
+STACK, SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
 plus the kernel's own idle and reporter threads; sizes from K_STACK_DEFINE and
-the #defines. A thread's worst case is the trampoline, its entry's deepest
-path, and IRQ_NESTING interrupt frames on top (the CPU32 takes interrupts on
-the running thread's supervisor stack). It must fit in the stack it is given
-minus the kernel's guard words.
+the #defines.
+
+Interrupts (the model of kernel/arch/cpu32/switch.S, see ASSURANCE.md):
+- kernel-routed handlers come from the k_irq_register(VECTOR, LEVEL, HANDLER, ..)
+  calls of the image's sources; raw handlers are the strong cpu32_vector_<n>
+  symbols of the image whose vector is not registered (autovector n = 24 + level);
+- the kernel's entry runs every routed handler on the interrupt stack; each
+  interrupt level can be active once, so the interrupt stack's bound is the sum
+  over the routed levels of entry frame + the deepest handler of that level, plus
+  every raw handler of a level above the lowest routed one (it can nest there);
+- a thread stack carries, on top of the thread's own deepest path: the windows
+  (the frame pushed before an entry masks the other levels: 10 bytes for the
+  kernel's entry, the hardware frame and the prologue for a raw handler that
+  masks at once, its whole depth for one that does not), and one complete
+  interrupt: the kernel entry's frame with the scheduling decision of its
+  outermost exit (k_resched on the thread's stack), or a masking raw handler;
+- a thread's bound must fit its stack and the interrupt bound the interrupt
+  stack (K_IRQ_STACK_BYTES), both minus the guard words (--gate full, what
+  make check runs; --gate thread checks the thread's own path alone).
 """
 import argparse
 import glob
@@ -36,10 +51,15 @@ ASM_FRAMES = {
     'k_arch_switch': 2 + 11 * 4,          # SR + d2-d7/a2-a6
     'k_isr_entry': 8 + 4 * 4 + 4,         # format-0 exception frame + d0-d1/a0-a1 + vector argument
     'k_arch_thread_trampoline': 0,
+    'cpu32_halt': 0,                      # STOP, never returns
+    'k_isr_call': 0,                      # moves to the interrupt stack (see interrupt_model)
 }
+# The kernel's interrupt entry (switch.S): what it pushes.
+ENTRY_HW = 8                 # CPU32 format-0 interrupt frame: SR, PC, format/vector
+ENTRY_SR = 2                 # the SR with this interrupt's level, pushed before masking
+ENTRY_REGS = 16              # d0-d1/a0-a1
+ENTRY_ARGS = 12              # on the interrupt stack: interrupted SP, SR, vector
 LIBGCC_FRAME = 32            # libgcc's m68k arithmetic helpers are leaves with small frames
-# Interrupt levels that can nest on one stack (PIT and DUART on the reference board).
-IRQ_NESTING_DEFAULT = 2
 
 
 def parse_ci(paths):
@@ -147,7 +167,7 @@ def find_threads(sources, defs, linked):
 
     threads = []
     for p, t in text.items():
-        for m in re.finditer(r'\bk_thread_create\s*\(([^;]*?)\)\s*[;!=)]', t, re.S):
+        for m in re.finditer(r'\b(?:k_thread_create|board_spawn)\s*\(([^;]*?)\)\s*[;!=)]', t, re.S):
             args = [a.strip() for a in re.split(r',(?![^(]*\))', m.group(1))]
             if len(args) == 7 and re.match(r'\w+$', args[2]) and args[2] != 'entry':
                 threads.append((args[1].strip('"'), args[2], size_of(args[5]), os.path.relpath(p, ROOT)))
@@ -159,6 +179,42 @@ def find_threads(sources, defs, linked):
             words = evaluate(m.group(3), defs)
             threads.append((m.group(1), m.group(2), None if words is None else words * 4, os.path.relpath(p, ROOT)))
     return [th for th in threads if th[1] in linked]
+
+
+def find_irq_handlers(sources, defs, linked):
+    """(level, handler, where) for every k_irq_register(VECTOR, LEVEL, HANDLER, ...)
+    call whose handler the image links; and the vectors they route."""
+    found, vectors = [], set()
+    for p in sources:
+        t = re.sub(r'/\*.*?\*/', '', open(p, errors='replace').read(), flags=re.S)
+        for m in re.finditer(r'\bk_irq_register\s*\(([^;{]*?)\)\s*[;!=)|]', t, re.S):
+            args = [x.strip() for x in re.split(r',(?![^(]*\))', m.group(1))]
+            if len(args) != 4 or not re.match(r'\w+$', args[2]) or args[2] not in linked:
+                continue
+            found.append((evaluate(args[1], defs), args[2], os.path.relpath(p, ROOT)))
+            v = evaluate(args[0], defs)
+            if v is not None:
+                vectors.add(v)
+    return found, vectors
+
+
+def raw_handlers(elf, routed):
+    """Strong cpu32_vector_<n> symbols (a driver's own vector-table entry) whose
+    vector the kernel does not route: (name, vector, level or None, masks at once).
+    `masks`: one of its first four instructions raises the mask to 7."""
+    nm = subprocess.run([CROSS + 'nm', elf], capture_output=True, text=True).stdout
+    names = sorted({(int(m.group(2)), m.group(1)) for m in
+                    re.finditer(r'^\S+ T (cpu32_vector_(\d+))$', nm, re.M)})
+    dis = subprocess.run([CROSS + 'objdump', '-d', elf], capture_output=True, text=True).stdout
+    out = []
+    for vector, name in names:
+        if vector in routed:
+            continue
+        m = re.search(r'<%s>:\n((?:.*\n){1,4})' % name, dis)
+        masks = bool(m and re.search(r'oriw #1792,%sr', m.group(1)))
+        level = vector - 24 if 25 <= vector <= 31 else None
+        out.append((name, vector, level, masks))
+    return out
 
 
 def load_indirect(path):
@@ -188,6 +244,18 @@ class Graph:
                         for c, t in table.items()}
         self.default_targets = unclassified
         self.memo, self.unknown, self.recursive = {}, set(), set()
+        self.override = {}
+
+    def depth_with(self, f, override):
+        """depth(f) with the indirect calls of the functions in `override`
+        going only to the targets given there (e.g. k_irq_dispatch to the
+        handlers of one interrupt level)."""
+        saved = self.memo
+        self.memo, self.override = {}, override
+        try:
+            return self.depth(f)
+        finally:
+            self.memo, self.override = saved, {}
 
     def depth(self, f, stack=()):
         """Deepest stack use below f's caller: f's frame and its deepest callee."""
@@ -213,11 +281,15 @@ class Graph:
         callees = set(self.edges.get(f, ()))
         if f == 'k_arch_thread_trampoline':
             callees.add('k_thread_start')
-        if f == 'k_isr_entry':
-            callees.add('k_isr_run')
+        if f == 'k_isr_call':
+            # on the caller's stack: only the outermost exit's k_resched; the
+            # callback runs on the interrupt stack (interrupt_model adds it there)
+            callees = {'k_resched'} if 'k_resched' in self.frames else set()
         best, path = 0, ()
         for c in sorted(callees):
-            if c == '__indirect_call':
+            if c == '__indirect_call' and f in self.override:
+                targets = self.override[f]
+            elif c == '__indirect_call':
                 targets = self.targets.get('%s@%s' % (f, ctx), self.targets.get(f, self.default_targets))
             else:
                 targets = [c]
@@ -229,16 +301,94 @@ class Graph:
         return self.memo[key]
 
 
+def interrupt_model(g, elf, sources, defs, linked, guard):
+    """The interrupt side of an image (see the module comment). Returns
+    (interrupt stack fits, report lines, its bound, the bytes every thread
+    stack must add, how)."""
+    lines, fits = [], True
+    handlers, routed = find_irq_handlers(sources, defs, linked)
+    raws = raw_handlers(elf, routed)
+    levels = {}
+    for level, h, where in handlers:
+        if level is None:
+            lines.append('FAILED: the level of %s (%s) is not a constant' % (h, where))
+            fits = False
+            continue
+        levels.setdefault(level, set()).add(h)
+    irq_total, irq_parts = 0, []
+    for level in sorted(levels):
+        d, path = g.depth_with('k_arch_isr_run', {'k_irq_dispatch': sorted(levels[level])})
+        cost = ENTRY_HW + ENTRY_SR + ENTRY_REGS + ENTRY_ARGS + RET + d
+        irq_total += cost
+        irq_parts.append('level %d %d B (%s)' % (level, cost, ' > '.join(path)))
+    raw_full, windows, window_parts = [], 10 * len(levels), []
+    low = min(levels) if levels else 8
+    for name, vector, level, masks in raws:
+        d, path = g.depth(name)
+        own = g.frames.get(name, 0)
+        if level is None:
+            lines.append('FAILED: raw vector %d (%s): its interrupt level is unknown' % (vector, name))
+            fits = False
+            continue
+        if masks:
+            raw_full.append((ENTRY_HW + d, name, path))
+            window_parts.append('%s prologue %d' % (name, ENTRY_HW + own))
+            windows += ENTRY_HW + own
+        else:
+            window_parts.append('%s (does not mask: whole) %d' % (name, ENTRY_HW + d))
+            windows += ENTRY_HW + d
+        if level > low:
+            irq_total += ENTRY_HW + d
+            irq_parts.append('raw %s level %d %d B' % (name, level, ENTRY_HW + d))
+        lines.append('raw handler %s: level %d, %s, %d B (%s)' % (
+            name, level, 'masks all levels at once' if masks else 'DOES NOT MASK', ENTRY_HW + d,
+            ' > '.join(path)))
+    # Callbacks a raw handler runs through k_isr_call (all levels masked): alone on
+    # the interrupt stack when it interrupted a thread, so they bound it on their own.
+    called = [t for t in g.targets.get('k_isr_call', []) if t in linked] \
+        if any(n for n, _, _, _ in raws) else []
+    for t in called:
+        d, path = g.depth(t)
+        cost = 8 + RET + d
+        lines.append('k_isr_call callback %s on the interrupt stack: %d B (%s)' % (t, cost, ' > '.join(path)))
+        if cost > irq_total:
+            irq_parts = ['%s %d B (alone, all levels masked)' % (t, cost)]
+            irq_total = cost
+    lines.insert(0, 'interrupt levels routed by the kernel: %s' % (
+        ', '.join('%d (%s)' % (lv, ' '.join(sorted(levels[lv]))) for lv in sorted(levels)) or 'none'))
+    if 'k_isr_entry' in linked:
+        rd, rpath = g.depth('k_resched')
+        outer = (ENTRY_HW + ENTRY_SR + ENTRY_REGS + RET + rd, 'k_isr_entry > ' + ' > '.join(rpath))
+    else:
+        outer = (0, 'no kernel entry')
+    full = max([outer] + [(b, n + ' > ...') for b, n, _ in raw_full])
+    extra = windows + full[0]
+    how = 'windows %d (kernel entry 10 x %d levels%s) + the deepest complete one %d: %s' % (
+        windows, len(levels), ''.join(', ' + w for w in window_parts), full[0], full[1])
+    size = evaluate('K_IRQ_STACK_BYTES', defs)
+    if levels and size is not None:
+        avail = size - 4 * guard
+        lines.append('interrupt stack %d B: worst case %d B = %s: %s' % (
+            size, irq_total, ' + '.join(irq_parts),
+            'ok, margin %d bytes (%d %%)' % (avail - irq_total, 100 * (avail - irq_total) // avail)
+            if irq_total <= avail else 'FAILED: can overflow by %d bytes' % (irq_total - avail)))
+        fits = fits and irq_total <= avail
+    elif levels:
+        lines.append('FAILED: K_IRQ_STACK_BYTES not found')
+        fits = False
+    return fits, lines, irq_total, extra, how
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--build', required=True, help='the firmware build tree (BUILD/firmware)')
     ap.add_argument('--apps', required=True)
-    ap.add_argument('--irq-nesting', type=int, default=IRQ_NESTING_DEFAULT)
-    ap.add_argument('--gate', choices=['thread', 'full'], default='thread',
-                    help='fail when the thread alone (thread) or with nested interrupts (full) can overflow')
+    ap.add_argument('--gate', choices=['thread', 'full'], default='full',
+                    help='fail when the thread alone (thread) or with the interrupts (full) can overflow')
     ap.add_argument('--suite')
     a = ap.parse_args()
-    headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h'))
+    headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h')) + \
+        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'drivers/*.h'))
     ok = bad = known = at_risk = 0
     known_list = {}
     kp = os.path.join(ROOT, 'assure', 'stack-known.txt')
@@ -269,17 +419,24 @@ def main():
         taken = address_taken(objs, edges) & linked
         g = Graph(frames, edges, dynamic, taken, {t[1] for t in threads},
                   load_indirect(os.path.join(ROOT, 'assure', 'stack-indirect.txt')))
-        isr, isr_path = g.depth('k_isr_entry') if 'k_isr_entry' in linked else (0, ())
         guard = evaluate('K_STACK_GUARD_WORDS', defs) or 0
-        print('== %s: %d functions with frames, %d address-taken (indirect-call targets), '
-              'interrupt path %d bytes' % (app, len(frames), len(g.indirect), isr))
-        print('   interrupt path: %s' % ' > '.join(isr_path))
+        irq_ok, irq_lines, irq_stack, extra, extra_path = interrupt_model(
+            g, elf, sources + headers, defs, linked, guard)
+        print('== %s: %d functions with frames, %d address-taken (indirect-call targets)'
+              % (app, len(frames), len(g.indirect)))
         print('   indirect-call targets: %s' % ', '.join(g.indirect))
+        for line in irq_lines:
+            print('   ' + line)
+        if irq_ok:
+            ok += 1
+        else:
+            bad += 1
+        print('   on every thread stack: %d B of interrupt (%s)' % (extra, extra_path))
         for name, entry, size, where in threads:
             d, path = g.depth(entry)
             tramp = ASM_FRAMES['k_arch_thread_trampoline'] + RET + g.frames.get('k_thread_start', 0) + RET
             own = tramp + d
-            worst = own + a.irq_nesting * isr
+            worst = own + extra
             avail = None if size is None else size - 4 * guard
             gate = worst if a.gate == 'full' else own
             if avail is None:
@@ -289,8 +446,8 @@ def main():
                 verdict = 'ok, margin %d bytes (%d %%)' % (avail - worst, 100 * (avail - worst) // avail)
                 ok += 1
             elif gate <= avail:
-                verdict = ('ok for its own calls (margin %d bytes); AT RISK with %d nested interrupts '
-                           '(over by %d bytes)' % (avail - own, a.irq_nesting, worst - avail))
+                verdict = ('ok for its own calls (margin %d bytes); AT RISK with the interrupts '
+                           '(over by %d bytes)' % (avail - own, worst - avail))
                 ok += 1
                 at_risk += 1
             elif '%s %s' % (app, name) in known_list:
@@ -299,8 +456,8 @@ def main():
             else:
                 verdict = 'FAILED: can overflow by %d bytes' % (worst - avail)
                 bad += 1
-            print('   thread %-14s entry %-20s stack %5s B (%s), worst case %5d B = %d thread + %d x %d interrupt: %s'
-                  % (name, entry, size, where, worst, tramp + d, a.irq_nesting, isr, verdict))
+            print('   thread %-14s entry %-20s stack %5s B (%s), worst case %5d B = %d thread + %d interrupt: %s'
+                  % (name, entry, size, where, worst, own, extra, verdict))
             print('       deepest: %s' % ' > '.join(path))
         if g.recursive:
             print('   FAILED: recursion, no bound: %s' % '; '.join(sorted(g.recursive)))
@@ -320,7 +477,7 @@ def main():
         if g.unknown:
             print('   no .ci (assumed %d bytes each, libgcc/asm): %s' % (LIBGCC_FRAME, ', '.join(sorted(g.unknown))))
     if at_risk:
-        print('%d threads fit their own calls but not the conservative interrupt bound (AT RISK, '
+        print('%d threads fit their own calls but not with the interrupts (AT RISK, '
               'reported; --gate full fails on them)' % at_risk)
     if known:
         print('%d threads over their stack by the conservative bound, listed in assure/stack-known.txt' % known)

@@ -50,4 +50,11 @@ uint8_t duart_op(void);   /* the shadow of OPR (the register is write-only) */
  * upper bits belong to the console's baud setup and are kept. */
 void duart_acr_ipchange(uint8_t ip_mask);
 
+/* Runs the counter/timer as a baud clock: timer mode from the X1 crystal
+ * (3.6864 MHz; ACR bits 6-4 = 110), CTUR:CTLR = preload, started. Its square
+ * wave is X1 / (2 x preload), and CSR code 0xD takes it as the 16x clock, so
+ * preload 6 gives 19200 baud. 0, or -1 when preload is 0 or the counter/timer
+ * is already in use (ACR bits 6-4 not 000, e.g. the 57600 console's clock). */
+int duart_ct_baud_clock(uint16_t preload);
+
 #endif /* DRIVERS_DUART_H */

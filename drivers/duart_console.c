@@ -11,8 +11,9 @@
  * by 2 x CTUR:CTLR = 4 to 921600 Hz = 16 x 57600, and CSRB = 0xDD takes it
  * for receive and transmit. 38400 and 9600 come from baud-rate set 1
  * (ACR bit 7 = 0) and leave the counter/timer stopped.
- * ACR also holds channel A's baud-rate set; the radio driver must keep
- * bits 7..4 as set here when it programs channel A.
+ * ACR also holds channel A's baud-rate set; the radio driver keeps bit 7
+ * and, only when the counter/timer is unused here (bits 6..4 = 000), takes it
+ * as channel A's 19200 baud clock (duart_ct_baud_clock in duart.h).
  */
 #if CONSOLE_BAUD == 57600
 #define CONSOLE_ACR   0xE0u /* BRG set 2, counter/timer = timer from X1 */

@@ -72,9 +72,9 @@ static void start_head(struct i2c_bus *b)
     (void)i2c_fsm_start(&b->fsm, x);   /* bus busy: the service thread retries */
 }
 
-/* Removes the ended head, starts the next one, reports the ended one.
- * Interrupts masked (or in the bus's handler). */
-static void complete_head(struct i2c_bus *b)
+/* Removes the ended head and starts the next one; returns the ended one,
+ * its callback not yet run. Interrupts masked (or in the bus's handler). */
+static struct i2c_xfer *retire_head(struct i2c_bus *b)
 {
     struct i2c_xfer *x = b->head;
     b->head = x->next;
@@ -90,6 +90,13 @@ static void complete_head(struct i2c_bus *b)
     if (b->fsm.need_reset)
         controller_reset(b);
     start_head(b);
+    return x;
+}
+
+/* retire_head, then the ended transaction's callback. */
+static void complete_head(struct i2c_bus *b)
+{
+    struct i2c_xfer *x = retire_head(b);
     if (x->done != NULL)
         x->done(x, x->arg);
 }
@@ -102,13 +109,21 @@ static void complete_head(struct i2c_bus *b)
  * scheduling decision (measured: about 170 instructions per byte that way,
  * against about 50 here; at 256 ns per instruction and 100 us per byte that is
  * the difference between 43 % and 13 % of the CPU). Only the end of a
- * transaction, which may wake a thread, runs inside k_isr_enter/k_isr_exit.
+ * transaction, which may wake a thread, runs through k_isr_call (as a kernel
+ * handler, on the interrupt stack).
  * A transaction without a callback ends without any kernel call at all.
  * The handler masks all interrupts at once, so no tick nests inside it.
  * Vectors: S3 holds 27 (bus A, level 3) / 25 (bus B, level 1), the
  * autovector numbers of those levels, so the vector is right whether the
  * board autovectors or takes the PCF8584's.
  */
+/* complete_head through k_isr_call: on the kernel's interrupt stack, not on
+ * the interrupted thread's. */
+static void complete_head_isr(void *bus)
+{
+    complete_head(bus);
+}
+
 static inline __attribute__((always_inline)) void i2c_irq(struct i2c_bus *b)
 {
     /* Mask everything while the handler runs (RTE restores the mask): the
@@ -127,12 +142,10 @@ static inline __attribute__((always_inline)) void i2c_irq(struct i2c_bus *b)
         b->stats.spurious++;
         I2C_FSM_WR(&b->fsm, PCF_S1, PCF_CTL_IDLE);
     } else if (ev == I2C_FSM_DONE) {
-        if (b->head->done != NULL) {   /* it may wake a thread */
-            k_isr_enter();
-            complete_head(b);
-            k_isr_exit();
+        if (b->head->done != NULL) {   /* it may wake a thread: as a kernel handler */
+            k_isr_call(complete_head_isr, b);
         } else {
-            complete_head(b);
+            (void)retire_head(b);      /* no callback: nothing to wake */
         }
     }
 }

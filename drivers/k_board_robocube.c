@@ -19,6 +19,7 @@
 #include "k_internal.h"
 #include "k_board.h"
 #include "cpu.h"
+#include "mc68332.h"
 #include "drivers/mc68681.h"
 #include "drivers/duart.h"
 #include "drivers/duart_console.h"
@@ -157,6 +158,25 @@ void duart_acr_ipchange(uint8_t ip_mask)
     k_arch_irq_restore(irq);
 }
 
+int duart_ct_baud_clock(uint16_t preload)
+{
+    uint32_t irq;
+    if (preload == 0u)
+        return -1;
+    irq = k_arch_irq_save();
+    if ((k_duart_acr & 0x70u) != 0u) {
+        k_arch_irq_restore(irq);
+        return -1;
+    }
+    k_duart_acr = (uint8_t)(k_duart_acr | 0x60u);
+    DUART_REG(DUART_ACR) = k_duart_acr;
+    DUART_REG(DUART_CTUR) = (uint8_t)(preload >> 8);
+    DUART_REG(DUART_CTLR) = (uint8_t)(preload & 0xFFu);
+    (void)DUART_REG(DUART_START_COUNTER);
+    k_arch_irq_restore(irq);
+    return 0;
+}
+
 size_t k_console_write(const char *s, size_t len)
 {
     size_t done = 0;
@@ -194,21 +214,29 @@ uint32_t k_board_console_dropped(void)
     return k_console_drops;
 }
 
+/* PIT hook: runs inside the kernel's interrupt entry (k_board_pit_isr). */
 static void k_board_tick(uint32_t ticks)
 {
     void (*cb)(void);
     (void)ticks;
-    k_isr_enter();
     k_tick();
     cb = k_board_tick_callback;
     if (cb != NULL)
         cb();
-    k_isr_exit();
+}
+
+/* The tick goes through the kernel's interrupt entry like every other
+ * interrupt: on the interrupt stack, with the scheduling decision at its
+ * outermost exit. */
+static void k_board_pit_isr(void *arg)
+{
+    (void)arg;
+    pit_interrupt();
 }
 
 int k_board_init(void)
 {
-    console_init(); /* channel B at 57600 8N1, all DUART interrupts masked */
+    console_init(); /* channel B at CONSOLE_BAUD 8N1, all DUART interrupts masked */
     (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
     (void)k_sem_init(&k_console_space, 0, 1);
     k_console_lf_held = 0;
@@ -222,7 +250,8 @@ int k_board_init(void)
             k_duart_handlers[i].fn = NULL;
     }
     DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
-    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK)
+    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK ||
+        k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     return pit_start(K_TICK_HZ, k_board_tick);
 }

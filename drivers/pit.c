@@ -10,15 +10,20 @@ static volatile uint32_t tick_count;
 static pit_tick_hook_fn tick_hook;
 static uint32_t tick_rate_hz;
 
-/* The PIT interrupt: vector VECTOR_PIT (64), claimed by name from start.S's table. */
-void cpu32_vector_64(void) __attribute__((interrupt_handler));
-void cpu32_vector_64(void)
+void pit_interrupt(void)
 {
     uint32_t now = tick_count + 1u;
     tick_count = now;
     if (tick_hook != NULL) {
         tick_hook(now);
     }
+}
+
+/* The PIT interrupt: vector VECTOR_PIT (64), claimed by name from start.S's table. */
+void cpu32_vector_64(void) __attribute__((interrupt_handler));
+void cpu32_vector_64(void)
+{
+    pit_interrupt();
 }
 
 /* PITR value for rate_hz, or 0 if the PIT cannot make that rate exactly. */

@@ -2,7 +2,10 @@
  * System tick from the MC68332 SIM periodic interrupt timer (PIT), clocked
  * by the 32.768 kHz reference: rate = 8192 Hz / PITM (PITM 1..255), or
  * 16 Hz / PITM with the /512 prescaler. Interrupt level 4, vector 64
- * (VECTOR_PIT); the driver owns vector 64 (cpu32_vector_64).
+ * (VECTOR_PIT); the driver claims vector 64 in the flash table
+ * (cpu32_vector_64). The kernel's board support routes vector 64 through the
+ * kernel's interrupt entry instead (its interrupt stack) and calls
+ * pit_interrupt from there.
  */
 #ifndef DRIVERS_PIT_H
 #define DRIVERS_PIT_H
@@ -21,6 +24,10 @@ typedef void (*pit_tick_hook_fn)(uint32_t ticks);
  * Interrupts must be enabled (SR mask < 4) by the caller for ticks to count.
  */
 int pit_start(uint32_t rate_hz, pit_tick_hook_fn hook);
+
+/* The tick interrupt's work: counts the tick and calls the hook. For an
+ * interrupt entry other than the driver's own vector. */
+void pit_interrupt(void);
 
 /* Stops the PIT (PITR = 0); the tick count keeps its value. */
 void pit_stop(void);

@@ -10,14 +10,31 @@ bytes, both ways (emu/README.md, "Radio medium"):
                         01 c  selects: bit 0 RX select (OP0), bit 1 TX select (OP1)
                         02 n  hello: station number n (for out-of-range pairs, logs)
                         03 0  sync: my quantum of virtual time is over (lock step)
+                        04 r  pace me: my characters take 10 bits at r x 300 baud
+                              (host peers; see "Pacing")
     medium -> station   00 b  a character heard
                         01 c  carrier: 1 while any other station transmits
                         03 0  go on: every synchronised station finished the quantum
+                        04 p  (to paced stations) your transmission is over:
+                              p = 1 paced in the boards' virtual time, 0 not paced
 
 Lock step: a board started with radio-sync-ns > 0 sends sync at the end of
 each quantum of its virtual time and waits for go on; the medium answers once
 every station that has ever sent sync (and is still here) has done so for
 the round. So the boards' clocks advance together; host peers do not sync.
+
+Pacing: a host peer has no virtual clock. While boards run in lock step,
+the medium plays a paced station's messages (selects and characters, in the
+order sent) in the boards' virtual time: one character per character time,
+counted in sync rounds of --sync-ns each, so its transmission occupies the
+air (carrier, collisions) exactly as long as a board's of the same length
+would. Before this a peer keyed its transmitter for the frame's duration in
+*wall* time; boards in lock step run several times faster than the wall
+clock when the host is idle, so they saw the peer's carrier for three times
+the frame's length after they had received it, and their ACK lost the
+arbitration 12 times and was dropped (net/README.md, "Fixed bugs"). When no
+board is in lock step, a paced station's messages apply at once (it then
+paces itself in wall time).
 
 A station is *on air* while only TX select is on (both = the module's
 loop-back test mode, which the board model keeps to itself), and *hears*
@@ -52,10 +69,10 @@ import asyncio
 import os
 import random
 import signal
-import time
 import sys
+from collections import deque
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC = 0, 1, 2, 3
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC, MSG_PACE = 0, 1, 2, 3, 4
 SEL_RX, SEL_TX = 1, 2
 MAX_BACKLOG = 1 << 20
 
@@ -75,6 +92,9 @@ class Station:
         self.tx_corrupt = {}          # receiver serial -> character positions to corrupt
         self.tx_chars = 0             # characters in this transmission
         self.tx_collided = False
+        self.char_ns = 0              # paced station: duration of one character
+        self.backlog = deque()        # paced station: (kind, value) not yet played
+        self.credit_ns = 0            # paced station: virtual time owed to its backlog
 
     @property
     def name(self):
@@ -204,14 +224,65 @@ class Medium:
             self.stats["delivered"] += 1
             r.send(bytes((MSG_DATA, out)))
 
+    def message(self, st, kind, value):
+        if st.char_ns and kind in (MSG_DATA, MSG_CONTROL) and st not in self.sync_members:
+            if self.sync_members or st.backlog:
+                st.backlog.append((kind, value))
+                if not self.sync_members:
+                    self.play(st, unpaced=True)
+                return
+        self.apply(st, kind, value)
+
+    def apply(self, st, kind, value):
+        if kind == MSG_DATA:
+            self.character(st, value)
+        elif kind == MSG_CONTROL:
+            self.set_selects(st, value)
+        elif kind == MSG_SYNC:
+            self.sync(st)
+        elif kind == MSG_HELLO:
+            st.number = value
+            self.log(f"peer #{st.serial} is station {value}")
+            self.update_carrier()
+        elif kind == MSG_PACE and value:
+            st.char_ns = 10 * 10**9 // (300 * value)
+            self.log(f"{st.name} paced at {300 * value} baud")
+        else:
+            self.log(f"{st.name}: unknown message {kind}, ignored")
+
+    def play(self, st, unpaced=False):
+        """Applies a paced station's backlog: everything up to the next
+        character at once, characters as the virtual time owed allows."""
+        while st.backlog:
+            kind, value = st.backlog[0]
+            if kind == MSG_DATA and not unpaced:
+                if st.credit_ns < st.char_ns:
+                    break
+                st.credit_ns -= st.char_ns
+            st.backlog.popleft()
+            self.apply(st, kind, value)
+        if not st.backlog:
+            st.credit_ns = 0                     # idle time is not owed
+
     def sync(self, st):
         self.sync_members.add(st)
         self.sync_done.add(st)
         self.sync_check()
 
     def sync_check(self):
-        if self.sync_members and self.sync_done >= self.sync_members:
+        if not self.sync_members:
+            for p in self.stations:              # nobody keeps virtual time now
+                if p.backlog:
+                    self.play(p, unpaced=True)
+            return
+        if self.sync_done >= self.sync_members:
             self.stats["sync_rounds"] += 1
+            # The paced stations' share of the round, before the boards go on,
+            # so what they send in this round reaches the boards in their next.
+            for p in self.stations:
+                if p.backlog:
+                    p.credit_ns += self.args.sync_ns
+                    self.play(p)
             for m in self.sync_done:
                 m.send(bytes((MSG_SYNC, 0)))
             self.sync_done = set()
@@ -226,6 +297,8 @@ class Medium:
             self.start_transmission(st)
         elif was and not st.on_air():
             self.end_transmission(st)
+            if st.char_ns:
+                st.send(bytes((MSG_PACE, int(bool(self.sync_members)))))
         self.update_carrier()
 
     async def serve_station(self, reader, writer):
@@ -245,19 +318,7 @@ class Medium:
                 pending += chunk
                 usable = len(pending) & ~1
                 for i in range(0, usable, 2):
-                    kind, value = pending[i], pending[i + 1]
-                    if kind == MSG_DATA:
-                        self.character(st, value)
-                    elif kind == MSG_CONTROL:
-                        self.set_selects(st, value)
-                    elif kind == MSG_SYNC:
-                        self.sync(st)
-                    elif kind == MSG_HELLO:
-                        st.number = value
-                        self.log(f"peer #{st.serial} is station {value}")
-                        self.update_carrier()
-                    else:
-                        self.log(f"{st.name}: unknown message {kind}, ignored")
+                    self.message(st, pending[i], pending[i + 1])
                 pending = pending[usable:]
         except (ConnectionError, OSError):
             pass
@@ -340,6 +401,9 @@ def main(argv=None):
     ap.add_argument("--corrupt", type=probability, default=0.0)
     ap.add_argument("--byte-errors", type=probability, default=0.0)
     ap.add_argument("--noise", type=probability, default=0.0)
+    ap.add_argument("--sync-ns", type=int, default=500_000,
+                    help="virtual time of one lock-step round: the boards' radio-sync-ns "
+                         "(paces host peers)")
     ap.add_argument("--out-of-range", action="append", default=[], metavar="A:B")
     ap.add_argument("-v", "--verbose", action="store_true")
     ap.add_argument("--trace", action="store_true", help="log every select change with its time")

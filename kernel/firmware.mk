@@ -10,9 +10,12 @@ FW_BUILD     := $(BUILD)/firmware
 app_elf       = $(FW_BUILD)/$(1)/$(1).elf
 # Processes the firmware's struct bsched has room for (Table 1 has 9; PDL programs up to 32).
 FW_MAX_PROCS := 32
+# -fno-store-merging: GCC 12 merged adjacent byte stores into a word store at an odd
+# address in net/ (an address error on the CPU32, which has no misaligned access); the
+# net code works around it, and this keeps the class of bug out of every other part.
 FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched \
                 -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -ffunction-sections -fdata-sections \
-                -fno-tree-loop-distribute-patterns -MMD -MP
+                -fno-tree-loop-distribute-patterns -fno-store-merging -MMD -MP
 FW_ASFLAGS   := -mcpu=cpu32 -g -I$(ROOT)/kernel/arch/cpu32 -MMD -MP
 FW_LDSCRIPT  := kernel/arch/cpu32/robocube.ld
 FW_LDFLAGS   := -mcpu=cpu32 -nostdlib -T $(FW_LDSCRIPT) -Wl,--gc-sections -Wl,--build-id=none

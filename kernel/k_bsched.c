@@ -1,49 +1,91 @@
 /* The B-scheduler thread (see k_bsched.h). */
 #include "k_bsched.h"
 
+/* The reporter's own priority, and the one it is lent to announce a cycle
+ * that still runs (the cycle runs at K_PRIO_APP_MAX). */
+#define K_BSCHED_REPORTER_PRIO (K_PRIO_APP_MAX - 1u)
+#define K_BSCHED_ANNOUNCE_PRIO (K_PRIO_APP_MAX + 1u)
+
 /* The instance the tick watches (the first one started). */
 static struct k_bsched *k_bsched_watched;
 
-/* Tick hook: a cycle still running at its successor's release is announced
- * at once; the in-thread accounting counts it when it ends. */
+/* Tick hook, in the tick interrupt: a cycle still running at its
+ * successor's release is counted at once; the reporter says so. */
 static void k_bsched_watchdog(k_ticks_t now)
 {
     struct k_bsched *b = k_bsched_watched;
     if (b == NULL || !b->in_cycle || now != b->watch)
         return;
+    b->stuck_cycle = b->cycles_run;
+    b->stuck_tick = now;
     b->stuck_reports++;
-    k_printf("bsched: minor cycle %lu still running at its successor's release (tick %lu)\n",
-             (unsigned long)b->cycles_run, (unsigned long)now);
+    (void)k_thread_setprio(&b->reporter, K_BSCHED_ANNOUNCE_PRIO);
+    (void)k_sem_post(&b->report_sem);
 }
 
-/* Prints what happened since the last report; one line per wake-up, so
- * overruns that come faster than the console are summed, never lost. */
+/* Prints what happened since the last burst: the last "still running"
+ * announcement and the overrun totals, each at most once. */
+static void k_bsched_report(struct k_bsched *b)
+{
+    uint32_t irq, events, cycle, late, overruns, stuck, stuck_cycle;
+    k_ticks_t stuck_tick;
+    irq = k_arch_irq_save();
+    events = b->overrun_events;
+    cycle = b->last_overrun_cycle;
+    late = b->last_overrun_late;
+    overruns = b->overruns;
+    stuck = b->stuck_reports;
+    stuck_cycle = b->stuck_cycle;
+    stuck_tick = b->stuck_tick;
+    k_arch_irq_restore(irq);
+    if (stuck != b->stuck_printed) {
+        k_printf("bsched: minor cycle %lu still running at its successor's release (tick %lu)\n",
+                 (unsigned long)stuck_cycle, (unsigned long)stuck_tick);
+        b->stuck_printed = stuck;
+        b->report_lines++;
+    }
+    if (events != b->reported_events) {
+        k_printf("bsched: overrun in minor cycle %lu: %lu ticks late, %lu overruns in %lu cycles so far\n",
+                 (unsigned long)cycle, (unsigned long)late, (unsigned long)overruns,
+                 (unsigned long)events);
+        b->reported_events = events;
+        b->report_lines++;
+    }
+}
+
+/* One burst per wake-up, at most one per K_BSCHED_REPORT_INTERVAL_TICKS
+ * (the end of the B-scheduler thread does not wait for the interval). */
 static void *k_bsched_reporter(void *arg)
 {
     struct k_bsched *b = arg;
     for (;;) {
-        uint32_t irq, events, cycle, late, overruns;
+        uint32_t irq;
         (void)k_sem_wait(&b->report_sem);
+        /* Events meanwhile only post report_sem: they cost no wake-up here. */
+        while (!b->finished && k_tick_before(k_ticks(), b->next_report))
+            (void)k_sem_wait_ticks(&b->finish_sem, b->next_report - k_ticks());
+        k_bsched_report(b);
+        b->next_report = k_ticks() + (k_ticks_t)K_BSCHED_REPORT_INTERVAL_TICKS;
+        /* Back below the cycle, unless a new announcement came meanwhile. */
         irq = k_arch_irq_save();
-        events = b->overrun_events;
-        cycle = b->last_overrun_cycle;
-        late = b->last_overrun_late;
-        overruns = b->overruns;
+        if (b->stuck_reports == b->stuck_printed)
+            (void)k_thread_setprio(&b->reporter, K_BSCHED_REPORTER_PRIO);
         k_arch_irq_restore(irq);
-        if (events != b->reported_events) {
-            k_printf("bsched: overrun in minor cycle %lu: %lu ticks late, %lu overruns in %lu cycles so far\n",
-                     (unsigned long)cycle, (unsigned long)late, (unsigned long)overruns,
-                     (unsigned long)events);
-            b->reported_events = events;
-        }
-        if (b->finished)
+        if (b->finished) {
+            k_bsched_report(b);
             return NULL;
+        }
     }
 }
 
 static void *k_bsched_main(void *arg)
 {
     struct k_bsched *b = arg;
+    /* The first release counts from when the thread runs, not from the
+     * call of k_bsched_start: filling the two stacks (for their high-water
+     * marks) may take most of a tick, and a release already due would make
+     * the first cycle late. */
+    b->next_release = k_ticks() + 1u;
     for (;;) {
         k_ticks_t start, end, late;
         int32_t ran;
@@ -80,6 +122,7 @@ static void *k_bsched_main(void *arg)
         k_bsched_watched = NULL;
     }
     b->finished = 1;
+    (void)k_sem_post(&b->finish_sem);
     (void)k_sem_post(&b->report_sem);
     (void)k_thread_join(&b->reporter, NULL, K_FOREVER);
     return NULL;
@@ -107,10 +150,17 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     b->finished = 0;
     b->in_cycle = 0;
     b->stuck_reports = 0;
-    r = k_sem_init(&b->report_sem, 0, 0xFFFFFFFFu);
+    b->stuck_cycle = 0;
+    b->stuck_tick = 0;
+    b->stuck_printed = 0;
+    b->report_lines = 0;
+    b->next_report = k_ticks();
+    r = k_sem_init(&b->report_sem, 0, 1);
+    if (r == K_OK)
+        r = k_sem_init(&b->finish_sem, 0, 1);
     if (r == K_OK)
         r = k_thread_create(&b->reporter, "bsched-report", k_bsched_reporter, b,
-                            b->reporter_stack, sizeof b->reporter_stack, K_PRIO_APP_MAX - 1u);
+                            b->reporter_stack, sizeof b->reporter_stack, K_BSCHED_REPORTER_PRIO);
     if (r == K_OK)
         r = k_thread_create(&b->thread, "bsched", k_bsched_main, b, stack, stack_bytes,
                             K_PRIO_APP_MAX);

@@ -11,12 +11,13 @@
 #define K_MAGIC_EVENT 0x45564E31u
 
 struct k_kernel {
+    /* First: the CPU32 interrupt entry (switch.S) reads it at k_kernel + 0. */
+    volatile uint32_t isr_nesting;
     struct k_prioq ready;
     struct k_tlist timers;
     struct k_thread *current;
     struct k_thread idle;
     struct k_thread boot;          /* the context k_start was called from */
-    volatile uint32_t isr_nesting;
     volatile k_ticks_t ticks;
     uint32_t seconds;              /* whole seconds of uptime */
     uint32_t subticks;             /* ticks into the current second */
@@ -38,6 +39,16 @@ void k_block_prepare(struct k_waitq *wq, k_ticks_t timeout);
 int32_t k_block_commit(void);
 /* k_block with an absolute deadline tick. */
 int32_t k_block_until(struct k_waitq *wq, k_ticks_t deadline);
+/* The tail of a blocking call that found nothing to take: K_EAGAIN when it
+ * may not wait (K_NO_WAIT), K_EISR in an interrupt handler, else k_block. */
+int32_t k_block_or_refuse(struct k_waitq *wq, k_ticks_t timeout);
+/* The POSIX timed form of a call with a timeout in ticks: `r` is what the
+ * call returned with the timeout k_abs_to_timeout gave; its "would block"
+ * code (the deadline had passed) becomes K_ETIMEDOUT. */
+static inline int k_timed_result(int r, int would_block)
+{
+    return r == would_block ? K_ETIMEDOUT : r;
+}
 /* Makes a blocked thread ready with the given result. */
 void k_wake(struct k_thread *t, int32_t result);
 /* Switches to the most urgent ready thread if it is not the current one

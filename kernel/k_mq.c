@@ -31,13 +31,9 @@ int k_mq_send_ticks(struct k_mq *q, const void *msg, k_ticks_t timeout)
         k_resched();
     } else if (k_msgbuf_put(&q->buf, msg) == 0) {
         r = K_OK;
-    } else if (timeout == K_NO_WAIT) {
-        r = K_EAGAIN;
-    } else if (k_in_isr()) {
-        r = K_EISR;
     } else {
-        k_kernel.current->wait_src = msg;
-        r = k_block(&q->senders, timeout);
+        k_kernel.current->wait_src = msg; /* read only while it waits */
+        r = k_block_or_refuse(&q->senders, timeout);
     }
     k_arch_irq_restore(irq);
     return r;
@@ -58,13 +54,9 @@ int k_mq_receive_ticks(struct k_mq *q, void *msg, k_ticks_t timeout)
             k_wake(w, K_OK);
             k_resched();
         }
-    } else if (timeout == K_NO_WAIT) {
-        r = K_EAGAIN;
-    } else if (k_in_isr()) {
-        r = K_EISR;
     } else {
-        k_kernel.current->wait_dst = msg;
-        r = k_block(&q->receivers, timeout);
+        k_kernel.current->wait_dst = msg; /* written only while it waits */
+        r = k_block_or_refuse(&q->receivers, timeout);
     }
     k_arch_irq_restore(irq);
     return r;
@@ -84,20 +76,14 @@ int k_mq_timedsend(struct k_mq *q, const void *msg, const struct k_timespec *abs
 {
     k_ticks_t t;
     int r = k_abs_to_timeout(abs_monotonic, &t);
-    if (r != K_OK)
-        return r;
-    r = k_mq_send_ticks(q, msg, t);
-    return r == K_EAGAIN ? K_ETIMEDOUT : r;
+    return r != K_OK ? r : k_timed_result(k_mq_send_ticks(q, msg, t), K_EAGAIN);
 }
 
 int k_mq_timedreceive(struct k_mq *q, void *msg, const struct k_timespec *abs_monotonic)
 {
     k_ticks_t t;
     int r = k_abs_to_timeout(abs_monotonic, &t);
-    if (r != K_OK)
-        return r;
-    r = k_mq_receive_ticks(q, msg, t);
-    return r == K_EAGAIN ? K_ETIMEDOUT : r;
+    return r != K_OK ? r : k_timed_result(k_mq_receive_ticks(q, msg, t), K_EAGAIN);
 }
 
 int k_mq_count(struct k_mq *q)

@@ -72,14 +72,48 @@ static int k_stack_intact(const struct k_thread *t)
                          g[2] == K_STACK_GUARD && g[3] == K_STACK_GUARD);
 }
 
+/* Reports are written piece by piece, without the formatter: they run in
+ * k_resched, on every stack and in the interrupt exit, where a formatting
+ * frame would cost every thread its depth. */
+static void k_write_str(const char *s)
+{
+    k_console_write_sync(s, k_strlen(s));
+}
+
+static uintptr_t k_canary_of(const struct k_thread *t)
+{
+    return (uintptr_t)K_THREAD_CANARY ^ (uintptr_t)t;
+}
+
+static int k_tcb_intact(const struct k_thread *t)
+{
+    return t->canary == k_canary_of(t);
+}
+
+/* A control block whose canary is broken cannot be trusted (its links,
+ * priority and name may be anything), so nothing can stop just that thread
+ * safely: the system stops, saying where the block is. */
+static void k_fatal_tcb(const struct k_thread *t)
+{
+    static const char hex[] = "0123456789abcdef";
+    char addr[8];
+    uint32_t a = (uint32_t)(uintptr_t)t;
+    unsigned i;
+    for (i = 0; i < 8u; i++)
+        addr[i] = hex[(a >> (28u - 4u * i)) & 0xFu];
+    k_write_str("kernel: control block of the thread at 0x");
+    k_console_write_sync(addr, sizeof addr);
+    k_write_str(" overwritten (a stack overflowed into it): halted\n");
+    k_arch_halt();
+}
+
 static void k_report(const char *what, const struct k_thread *t)
 {
-    char line[80];
-    int n = k_snprintf(line, sizeof line, "kernel: %s in thread '%s'\n", what,
-                       t->name != NULL ? t->name : "?");
-    if (n > (int)sizeof line - 1)
-        n = (int)sizeof line - 1;
-    k_console_write_sync(line, (size_t)n);
+    k_write_str("kernel: ");
+    k_write_str(what);
+    k_write_str(" in thread '");
+    k_write_str(t->name != NULL ? t->name : "?");
+    k_write_str("'\n");
 }
 
 static void k_wake_joiners(struct k_thread *t)
@@ -117,11 +151,15 @@ void k_resched(void)
 
     if (!k_kernel.started || k_kernel.isr_nesting != 0)
         return; /* k_isr_exit does it */
+    if (!k_tcb_intact(prev))
+        k_fatal_tcb(prev);
     if (prev->state != K_THREAD_DEAD && !k_stack_intact(prev))
         k_stop_overflowed(prev);
     next = k_ready_best();
     if (next == prev)
         return;
+    if (!k_tcb_intact(next)) /* overwritten by another thread's stack */
+        k_fatal_tcb(next);
     next->slice_left = K_TIMESLICE_TICKS;
     next->switches_in++;
     k_stats.context_switches++;
@@ -186,6 +224,15 @@ int32_t k_block(struct k_waitq *wq, k_ticks_t timeout)
 {
     k_block_prepare(wq, timeout);
     return k_block_commit();
+}
+
+int32_t k_block_or_refuse(struct k_waitq *wq, k_ticks_t timeout)
+{
+    if (timeout == K_NO_WAIT)
+        return K_EAGAIN;
+    if (k_in_isr())
+        return K_EISR;
+    return k_block(wq, timeout);
 }
 
 void k_wake(struct k_thread *t, int32_t result)
@@ -289,6 +336,7 @@ static void k_thread_setup(struct k_thread *t, const char *name, k_thread_fn ent
     for (i = 0; i < words; i++) /* guard words, and a fill that shows the high-water mark */
         stack[i] = K_STACK_GUARD;
     k_arch_thread_init(t);
+    t->canary = k_canary_of(t);
     t->state = K_THREAD_READY;
     t->all_next = k_kernel.all;
     k_kernel.all = t;
@@ -495,25 +543,28 @@ static k_ticks_t k_timespec_to_ticks(const struct k_timespec *t)
 
 int k_abs_to_timeout(const struct k_timespec *abs, k_ticks_t *timeout)
 {
-    struct k_timespec now;
-    int32_t sec, nsec;
-    struct k_timespec rel;
+    uint32_t s, sec, sub, part, abs_sec;
     if (!k_timespec_valid(abs))
         return K_EINVAL;
-    (void)k_clock_gettime(K_CLOCK_MONOTONIC, &now);
-    sec = abs->tv_sec - now.tv_sec;
-    nsec = abs->tv_nsec - now.tv_nsec;
-    if (nsec < 0) {
-        nsec += 1000000000;
-        sec--;
-    }
-    if (sec < 0) {
+    s = k_arch_irq_save();
+    sec = k_kernel.seconds;
+    sub = k_kernel.subticks;
+    k_arch_irq_restore(s);
+    /* In whole ticks: the deadline is the first tick at or after abs. (The
+     * clock reads a tick's start with its nanoseconds truncated, so
+     * subtracting timespecs left up to a nanosecond that rounded up to one
+     * tick too many when a tick fell between the two clock reads.) */
+    abs_sec = (uint32_t)abs->tv_sec;
+    part = ((uint32_t)abs->tv_nsec * 2u + K_NS_PER_TICK_X2 - 1u) / K_NS_PER_TICK_X2;
+    if (abs_sec < sec || (abs_sec == sec && part <= sub)) {
         *timeout = K_NO_WAIT;
         return K_OK;
     }
-    rel.tv_sec = sec;
-    rel.tv_nsec = nsec;
-    *timeout = k_timespec_to_ticks(&rel);
+    if (abs_sec - sec >= 0x7FFFFFFFu / K_TICK_HZ - 1u) {
+        *timeout = 0x7FFFFFFFu;
+        return K_OK;
+    }
+    *timeout = (abs_sec - sec) * K_TICK_HZ + part - sub;
     return K_OK;
 }
 
@@ -594,6 +645,8 @@ int k_thread_list(struct k_thread_info *out, unsigned max)
         return K_EINVAL;
     s = k_arch_irq_save();
     for (t = k_kernel.all; t != NULL; t = t->all_next, count++) {
+        if (!k_tcb_intact(t))
+            k_fatal_tcb(t);
         if (count < max) {
             struct k_thread_info *info = &out[count];
             info->name = t->name != NULL ? t->name : "?";
@@ -605,6 +658,7 @@ int k_thread_list(struct k_thread_info *out, unsigned max)
             info->stack_bytes = (uint32_t)(t->stack_words * 4u);
             info->stack_used = 0;
             info->switches_in = t->switches_in;
+            info->stack_intact = (uint8_t)k_stack_intact(t);
         }
     }
     k_arch_irq_restore(s);
@@ -613,6 +667,20 @@ int k_thread_list(struct k_thread_info *out, unsigned max)
     for (i = 0; i < count && i < max; i++)
         out[i].stack_used = k_stack_high_water(out[i].stack_base, out[i].stack_bytes / 4u);
     return (int)count;
+}
+
+int k_irq_stack_usage(uint32_t *bytes, uint32_t *used)
+{
+    size_t words;
+    const uint32_t *base;
+    if (bytes == NULL || used == NULL)
+        return K_EINVAL;
+    base = k_arch_irq_stack(&words);
+    if (base == NULL)
+        return K_ESRCH;
+    *bytes = (uint32_t)(words * 4u);
+    *used = k_stack_high_water(base, words);
+    return K_OK;
 }
 
 /* ---- start-up ---- */
@@ -636,6 +704,7 @@ void k_init(void)
                    K_STACK_WORDS(K_IDLE_STACK_BYTES), (uint8_t)K_PRIO_IDLE);
     /* The boot context: a pseudo-thread so k_start has somewhere to save. */
     k_kernel.boot.name = "boot";
+    k_kernel.boot.canary = k_canary_of(&k_kernel.boot);
     k_kernel.boot.state = K_THREAD_DEAD;
     k_list_init(&k_kernel.boot.held);
     k_waitq_init(&k_kernel.boot.joiners);

@@ -16,6 +16,14 @@ void k_memset(void *dst, int value, size_t n)
         *d++ = (uint8_t)value;
 }
 
+size_t k_strlen(const char *s)
+{
+    size_t n = 0;
+    while (s[n] != '\0')
+        n++;
+    return n;
+}
+
 /* ---- ready queues ---- */
 
 void k_prioq_init(struct k_prioq *q)

@@ -30,12 +30,8 @@ int k_sem_wait_ticks(struct k_sem *s, k_ticks_t timeout)
     if (s->count > 0u) {
         s->count--;
         r = K_OK;
-    } else if (timeout == K_NO_WAIT) {
-        r = K_EAGAIN;
-    } else if (k_in_isr()) {
-        r = K_EISR;
     } else {
-        r = k_block(&s->wq, timeout);
+        r = k_block_or_refuse(&s->wq, timeout);
     }
     k_arch_irq_restore(irq);
     return r;
@@ -55,10 +51,7 @@ int k_sem_timedwait(struct k_sem *s, const struct k_timespec *abs_monotonic)
 {
     k_ticks_t t;
     int r = k_abs_to_timeout(abs_monotonic, &t);
-    if (r != K_OK)
-        return r;
-    r = k_sem_wait_ticks(s, t);
-    return r == K_EAGAIN ? K_ETIMEDOUT : r;
+    return r != K_OK ? r : k_timed_result(k_sem_wait_ticks(s, t), K_EAGAIN);
 }
 
 int k_sem_post(struct k_sem *s)
@@ -171,10 +164,7 @@ int k_mutex_timedlock(struct k_mutex *m, const struct k_timespec *abs_monotonic)
 {
     k_ticks_t t;
     int r = k_abs_to_timeout(abs_monotonic, &t);
-    if (r != K_OK)
-        return r;
-    r = k_mutex_lock_ticks(m, t);
-    return r == K_EBUSY ? K_ETIMEDOUT : r;
+    return r != K_OK ? r : k_timed_result(k_mutex_lock_ticks(m, t), K_EBUSY);
 }
 
 int k_mutex_unlock(struct k_mutex *m)

@@ -31,6 +31,7 @@ void link_init(struct link *l, uint8_t self, const struct link_env *env, uint32_
     }
     l->tx_active = 0;
     l->tx_on_air = 0;
+    l->tx_burst = 0;
     l->stats = (struct link_stats){ 0 };
 }
 
@@ -49,6 +50,7 @@ static void link_send_fragment(struct link *l)
     f->seq = l->peers[l->tx_dst].tx_seq;
     (void)packet_fragment(l->tx_msg, l->tx_len, l->tx_port, l->tx_index, f);
     l->tx_on_air = 0;   /* the timer starts when it has left (link_frame_done) */
+    l->tx_burst = 0;    /* link_acked sets it for a continuation */
     link_emit(l, f);
 }
 
@@ -107,10 +109,12 @@ static void link_acked(struct link *l, const struct frame *f)
     l->tx_index++;
     l->tx_retries = 0;
     l->tx_rto = LINK_RTO_MS;
-    if (l->tx_index >= packet_count(l->tx_len))
+    if (l->tx_index >= packet_count(l->tx_len)) {
         link_finish(l, LINK_OK);
-    else
+    } else {
         link_send_fragment(l);
+        l->tx_burst = 1;
+    }
 }
 
 static void link_deliver_fragment(struct link *l, struct link_peer *p, const struct frame *f)
@@ -208,4 +212,10 @@ uint32_t link_poll(struct link *l, uint32_t now_ms)
 int link_busy(const struct link *l)
 {
     return l->tx_active;
+}
+
+int link_is_burst(const struct link *l, const struct frame *f)
+{
+    return l->tx_active && l->tx_burst && f->type == LINK_DATA && f->src == l->self &&
+           f->dst == l->tx_dst && f->seq == l->peers[l->tx_dst].tx_seq;
 }

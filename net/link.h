@@ -17,7 +17,8 @@
  * LINK_EUNREACH. The receiver acknowledges every DATA frame, delivers a
  * fragment only if its seq differs from the last one delivered from that
  * peer (a repeat is a duplicate: acknowledged again, counted, dropped), and
- * reassembles messages in order.
+ * reassembles messages in order. The fragments of one message go out as a
+ * burst: each right after the ACK of the one before (link_is_burst).
  */
 #ifndef NET_LINK_H
 #define NET_LINK_H
@@ -86,6 +87,10 @@ struct link {
     size_t tx_len;
     unsigned tx_index, tx_retries;
     uint32_t tx_rto, tx_deadline;
+    /* The fragment in flight follows its predecessor's ACK. 32 bits, between
+     * 32-bit fields: GCC 12 merges stores to adjacent bytes into one word
+     * store even at an odd address, an address error on the CPU32. */
+    uint32_t tx_burst;
     struct frame tx_frame;
     struct link_stats stats;
 };
@@ -105,5 +110,10 @@ void link_frame_done(struct link *l, uint8_t type, uint32_t now_ms);
 /* Timers; returns the ms until the next deadline (UINT32_MAX: none). */
 uint32_t link_poll(struct link *l, uint32_t now_ms);
 int link_busy(const struct link *l);
+/* f is the next fragment of the message being sent, handed over right after
+ * its predecessor's ACK (not a first fragment, not a retransmission): it may
+ * skip the MAC's initial random wait (mac_begin_burst), as a fragment burst
+ * in IEEE 802.11 follows its ACK after the short interframe space. */
+int link_is_burst(const struct link *l, const struct frame *f);
 
 #endif /* NET_LINK_H */

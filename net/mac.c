@@ -6,6 +6,7 @@ void mac_init(struct mac *m, uint32_t seed)
     m->rng = seed != 0u ? seed : 0x9E3779B9u;
     m->attempt = 0;
     m->waited = 0;
+    m->burst = 0;
     m->deferrals = 0;
     m->drops = 0;
 }
@@ -24,6 +25,14 @@ void mac_begin(struct mac *m)
 {
     m->attempt = 0;
     m->waited = 0;
+    m->burst = 0;
+}
+
+void mac_begin_burst(struct mac *m)
+{
+    m->attempt = 0;
+    m->waited = 1;
+    m->burst = 1;
 }
 
 static uint32_t mac_window(unsigned attempt)
@@ -49,7 +58,8 @@ int mac_decide(struct mac *m, int carrier, int is_ack, uint32_t *wait_ms)
         m->drops++;
         return MAC_DROP;
     }
-    *wait_ms = is_ack ? MAC_ACK_RETRY_MS
-                      : (1u + mac_random(m) % mac_window(m->attempt)) * MAC_SLOT_MS;
+    *wait_ms = is_ack || (m->burst && m->attempt <= MAC_BURST_RETRIES)
+                   ? MAC_ACK_RETRY_MS
+                   : (1u + mac_random(m) % mac_window(m->attempt)) * MAC_SLOT_MS;
     return MAC_WAIT;
 }

@@ -21,6 +21,7 @@
 #define MAC_CW_MAX        64u
 #define MAC_MAX_ATTEMPTS  12u
 #define MAC_ACK_RETRY_MS  1u     /* an ACK waits out the tail of the frame it answers */
+#define MAC_BURST_RETRIES 3u     /* ... and so does the next fragment of a burst */
 
 enum mac_action { MAC_SEND = 0, MAC_WAIT = 1, MAC_DROP = 2 };
 
@@ -28,6 +29,7 @@ struct mac {
     uint32_t rng;            /* xorshift32 state, never 0 */
     uint8_t attempt;         /* deferrals of the current frame */
     uint8_t waited;          /* the initial wait of the current frame is done */
+    uint8_t burst;           /* the current frame continues a burst */
     uint32_t deferrals;      /* carrier busy when we wanted to send */
     uint32_t drops;          /* frames given up (channel never free) */
 };
@@ -35,6 +37,11 @@ struct mac {
 void mac_init(struct mac *m, uint32_t seed);
 /* Starts arbitration for a new frame. */
 void mac_begin(struct mac *m);
+/* The same for a frame that continues a burst (link_is_burst): no initial
+ * random wait, and while the carrier is on (the tail of the ACK it follows:
+ * its pad character) it retries every MAC_ACK_RETRY_MS for its first
+ * MAC_BURST_RETRIES deferrals, then backs off as any data frame. */
+void mac_begin_burst(struct mac *m);
 /* What to do now for the current frame: MAC_SEND; MAC_WAIT (*wait_ms set,
  * ask again after it); MAC_DROP (attempts exhausted, counted). */
 int mac_decide(struct mac *m, int carrier, int is_ack, uint32_t *wait_ms);

@@ -3,6 +3,7 @@
 #include "kernel.h"
 #include "mac.h"
 #include "radio.h"
+#include "fec.h"
 
 #define NET_EV_RX   0x1u
 #define NET_EV_TX   0x2u
@@ -47,10 +48,12 @@ static unsigned net_txq_head, net_txq_count;
 static uint8_t net_on_air;            /* the queue's head is being transmitted */
 static uint32_t net_mac_wake;         /* ms; valid while net_mac_waiting */
 static uint8_t net_mac_waiting, net_mac_started;
-static uint8_t net_encoded[FRAME_ENCODED_MAX];
+static uint8_t net_encoded[FRAME_ENCODED_MAX > FEC_ENCODED_MAX ? FRAME_ENCODED_MAX
+                                                                : FEC_ENCODED_MAX];
 static uint32_t net_port_overflows, net_txq_drops;
 static uint8_t net_self;
 static uint8_t net_running;
+static uint8_t net_fec;
 
 static void net_transmit_cb(void *ctx, const struct frame *f)
 {
@@ -123,7 +126,10 @@ static uint32_t net_pump_tx(uint32_t now)
             net_mac_waiting = 0;
         }
         if (!net_mac_started) {
-            mac_begin(&net_mac);
+            if (link_is_burst(&net_link, f))
+                mac_begin_burst(&net_mac);
+            else
+                mac_begin(&net_mac);
             net_mac_started = 1;
         }
         action = mac_decide(&net_mac, radio_carrier(), f->type == LINK_ACK, &wait);
@@ -136,7 +142,8 @@ static uint32_t net_pump_tx(uint32_t now)
             net_pop_tx(now);
             continue;
         }
-        n = frame_encode(f, net_encoded, sizeof net_encoded);
+        n = net_fec ? fec_frame_encode(f, net_encoded, sizeof net_encoded)
+                    : frame_encode(f, net_encoded, sizeof net_encoded);
         if (n == 0u || radio_transmit(net_encoded, n) != K_OK) {
             net_pop_tx(now);
             continue;
@@ -188,6 +195,11 @@ static void *net_main(void *arg)
 
 int net_init(uint8_t station, uint32_t seed)
 {
+    return net_init_flags(station, seed, 0u);
+}
+
+int net_init_flags(uint8_t station, uint32_t seed, unsigned flags)
+{
     static const struct link_env env = {
         net_transmit_cb, net_deliver_cb, net_send_done_cb, net_can_deliver_cb, NULL
     };
@@ -207,7 +219,10 @@ int net_init(uint8_t station, uint32_t seed)
     link_init(&net_link, station, &env, seed * 2654435761u + station + 1u);
     mac_init(&net_mac, seed * 40503u + station * 7919u + 1u);
     net_txq_head = net_txq_count = 0;
-    if ((rc = radio_init(&net_ev, NET_EV_RX, NET_EV_TX)) != K_OK)
+    net_fec = (flags & NET_FEC) != 0u;
+    if (net_fec && fec_init() != 0)
+        return K_EINVAL;
+    if ((rc = radio_init(&net_ev, NET_EV_RX, NET_EV_TX, net_fec)) != K_OK)
         return rc;
     rc = k_thread_create(&net_thread, "net", net_main, NULL, net_stack, sizeof net_stack,
                          NET_PRIO);
@@ -295,6 +310,8 @@ void net_stats_get(struct net_stats *out)
     out->unreachable = net_link.stats.unreachable;
     out->port_overflows = net_port_overflows + net_link.stats.rx_busy;
     out->rx_overruns = r.rx_overruns;
+    out->fec_corrected = r.fec.corrected;
+    out->fec_failed = r.fec.uncorrectable + r.fec.bad_frames + r.fec_bad_count;
 }
 
 int net_stats_print(void)
@@ -313,5 +330,9 @@ int net_stats_print(void)
              (unsigned long)s.delivered, (unsigned long)s.duplicates,
              (unsigned long)s.unreachable, (unsigned long)s.port_overflows,
              (unsigned long)s.rx_overruns);
+    k_printf("  radio %lu baud%s\n", (unsigned long)radio_baud(), net_fec ? ", fec" : "");
+    if (net_fec)
+        k_printf("  fec: bytes corrected %lu, frames beyond the code %lu\n",
+                 (unsigned long)s.fec_corrected, (unsigned long)s.fec_failed);
     return 0;
 }

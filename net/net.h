@@ -1,7 +1,8 @@
 /*
  * The network stack of a RoboCube: a kernel service thread above the
  * applications (paper, section 3) running the layers of this folder:
- *   radio.c   interrupt-driven byte stream <-> frames (frame.c, crc16.c)
+ *   radio.c   interrupt-driven byte stream <-> frames (frame.c, crc16.c;
+ *             with NET_FEC fec.c and rs.c, Reed-Solomon)
  *   mac.c     listen before talk, random backoff, bounded attempts
  *   link.c    reliable channel per peer, datagrams, broadcast
  *   packet.c  messages <-> fragments, ports
@@ -31,11 +32,18 @@ struct net_stats {
     uint32_t retransmissions, collisions, deferrals, mac_drops;
     uint32_t duplicates, delivered, unreachable, port_overflows;
     uint32_t rx_overruns;
+    uint32_t fec_corrected, fec_failed;  /* NET_FEC: bytes corrected; frames beyond the code */
 };
+
+/* net_init_flags: forward error correction on air (fec.h). Every station of a
+ * network must agree on it (a FEC frame is noise to a station without). */
+#define NET_FEC 0x1u
 
 /* Starts the stack as station `station` (0..LINK_MAX_STATIONS-1); seed makes
  * the backoffs of different stations differ. Call once after k_init. */
 int net_init(uint8_t station, uint32_t seed);
+/* The same with options: NET_FEC. */
+int net_init_flags(uint8_t station, uint32_t seed, unsigned flags);
 uint8_t net_station(void);
 /* Sends len bytes to port of dst (a station or NET_BROADCAST). With
  * NET_RELIABLE (unicast only) it returns when dst acknowledged the whole

@@ -4,11 +4,12 @@
 #   make check-net-target   boards on the medium: 2 and 3 stations, the host
 #                           peer both ways, a faulty medium, a station that leaves,
 #                           the medium's faults and the board model's radio mode
-#   make net-soak BOARDS=N MESSAGES=M LOSS=P CORRUPT=Q SEED=S
-#   make check-net-soak     a short soak (2 boards + host peer, 10 % loss and corruption)
+#   make net-soak BOARDS=N MESSAGES=M LOSS=P CORRUPT=Q BYTE_ERRORS=R SEED=S FEC=0|1
+#   make check-net-soak     two short soaks (frame faults; byte errors with FEC)
+#   make net-interop        the host-peer-first tests INTEROP_RUNS (10) times
 #   make net-bench          goodput and latency figures (net/README.md)
 NET_BUILD      := $(BUILD)/net
-NET_UNIT_NAMES := frame xdr link mac
+NET_UNIT_NAMES := frame xdr link mac fec
 NET_UNIT_TESTS := $(patsubst %,$(NET_BUILD)/tests/test_%,$(NET_UNIT_NAMES))
 NET_SANITIZE   ?= -fsanitize=address,undefined -fno-sanitize-recover=all
 NET_HOST_FLAGS := $(HOST_CFLAGS) -I$(ROOT) $(NET_SANITIZE)
@@ -16,9 +17,10 @@ net_test_srcs_frame := net/frame.c net/crc16.c
 net_test_srcs_xdr   := net/xdr.c
 net_test_srcs_link  := net/link.c net/packet.c
 net_test_srcs_mac   := net/mac.c
+net_test_srcs_fec   := net/fec.c net/rs.c net/crc16.c
 net_test_libs_xdr   := -I/usr/include/tirpc -ltirpc
 
-ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample
+ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample $(NET_BUILD)/tests/fec_sample
 CHECKS += net-unit net-target net-soak
 HOST_UNIT_CHECKS += net-unit
 
@@ -36,65 +38,93 @@ check-net-unit:
 NETNODE_ELF := $(call app_elf,netnode)
 
 # The XDR sample tool the Python comparison (test_xdr_python.py) runs.
-$(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/xdr.c net/xdr.h
+$(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/tests/xdr_sample.h net/xdr.c net/xdr.h
 	@mkdir -p $(@D)
 	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
 
+# The FEC tool the reedsolo comparison (test_fec_python.py) runs.
+$(NET_BUILD)/tests/fec_sample: net/tests/fec_sample.c net/fec.c net/fec.h net/rs.c net/rs.h net/crc16.c
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/fec_sample.c net/fec.c net/rs.c net/crc16.c
+
 check-net-target:
 	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample
+	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample \
+	    $(NET_BUILD)/tests/fec_sample
 	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
-	    -m "not interop" $(ROOT)/net/tests/target
+	    $(ROOT)/net/tests/target
 
-# The host peer speaking first to a fresh board: flaky (net/README.md, known bugs).
+# The host peer speaking first to a fresh board (the tests marked interop),
+# INTEROP_RUNS times in a row: the evidence that the bug of net/README.md
+# ("Fixed bugs") stays fixed. Niced, as every heavy run.
+INTEROP_RUNS ?= 10
 .PHONY: net-interop
 net-interop:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-interop -m interop $(ROOT)/net/tests/target
+	@p=0; f=0; for i in $$(seq $(INTEROP_RUNS)); do \
+	    if NETNODE_ELF=$(NETNODE_ELF) nice -n 19 $(PYTHON) -m pytest -q -p no:cacheprovider \
+	        -m interop $(ROOT)/net/tests/target >$(NET_BUILD)/interop-$$i.log 2>&1; \
+	    then p=$$((p + 1)); else f=$$((f + 1)); echo "run $$i failed: $(NET_BUILD)/interop-$$i.log"; fi; \
+	done; echo "net-interop: $$p of $(INTEROP_RUNS) runs passed"; [ $$f -eq 0 ]
 
 BOARDS   ?= 2
 MESSAGES ?= 5
 LOSS     ?= 0.1
 CORRUPT  ?= 0.1
+BYTE_ERRORS ?= 0
 SEED     ?= 1
+FEC      ?= 0
 net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
 	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards $(BOARDS) \
-	    --messages $(MESSAGES) --loss $(LOSS) --corrupt $(CORRUPT) --seed $(SEED)
+	    --messages $(MESSAGES) --loss $(LOSS) --corrupt $(CORRUPT) --byte-errors $(BYTE_ERRORS) \
+	    --seed $(SEED) $(if $(filter 1 on yes,$(FEC)),--fec)
 
-# The short soak of make check: 2 boards and the host peer, 10 % frame loss,
-# 10 % corrupted frames, 3 messages per pair (18 messages).
+# The short soaks of make check: (1) 2 boards and the host peer, 10 % frame
+# loss, 10 % corrupted frames, 3 messages per pair (18 messages); (2) the
+# issue's goal with FEC: 3 boards and the host peer, 10 % byte errors per
+# character, 10 % frame loss, all sending at once, 3 messages per pair (36).
+NET_SOAK_CHECKS := "--boards 2 --messages 3 --loss 0.1 --corrupt 0.1 --seed 1" \
+                   "--boards 3 --messages 3 --loss 0.1 --byte-errors 0.1 --fec --seed 1"
 check-net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@out=$$($(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards 2 --messages 3 \
-	    --loss 0.1 --corrupt 0.1 --seed 1 --timeout 150); rc=$$?; echo "$$out"; \
-	if [ $$rc -eq 0 ]; then $(call record,net-soak,1,0); else $(call record,net-soak,0,1); fi; \
-	[ $$rc -eq 0 ]
+	@p=0; f=0; for args in $(NET_SOAK_CHECKS); do \
+	    out=$$(nice -n 19 $(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) $$args \
+	        --timeout 150); rc=$$?; echo "$$out" | tail -2; \
+	    if [ $$rc -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
+	done; $(call record,net-soak,$$p,$$f); [ $$f -eq 0 ]
 
 net-bench:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@$(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec
 
 # ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
-#   make fuzz             frame parser and XDR decoder, FUZZ_RUNS (10^7) executions each
+#   make fuzz             frame parser, XDR decoder, FEC receiver+decoder: FUZZ_RUNS (10^7)
+#                         executions each (the FEC one FUZZ_RUNS / NET_FUZZ_FEC_DIV)
 #   make check-net-fuzz   the same, 2 x 10^5 executions each (suite net-fuzz)
-#   make check-net-cbmc   the memory-safety proofs (suite net-cbmc)
+#   make check-net-cbmc   the memory-safety proofs (suite net-cbmc): frame receiver,
+#                         XDR decoder, FEC receiver, Reed-Solomon decoder, GF(256)
 NET_FUZZ_CC    ?= clang-14
 NET_FUZZ_FLAGS := -std=c99 -O1 -g -I$(ROOT) -fsanitize=fuzzer,address,undefined \
                   -fno-sanitize-recover=all
-NET_FUZZERS    := frame xdr
+NET_FUZZERS    := frame xdr fec
 net_fuzz_srcs_frame := net/frame.c net/crc16.c
 net_fuzz_srcs_xdr   := net/xdr.c
+net_fuzz_srcs_fec   := net/fec.c net/rs.c net/crc16.c
 FUZZ_RUNS ?= 10000000
 NET_FUZZ_CHECK_RUNS ?= 200000
+# A FEC input costs a Reed-Solomon decode (~0.5 ms under ASan): fewer runs.
+NET_FUZZ_FEC_DIV ?= 8
 CHECKS += net-fuzz net-cbmc
 
 .PHONY: fuzz check-net-fuzz check-net-cbmc
-$(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*.c)
+$(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*.c) \
+                          net/tests/xdr_sample.h
 	@mkdir -p $(@D)
 	$(NET_FUZZ_CC) $(NET_FUZZ_FLAGS) -o $@ $< $(net_fuzz_srcs_$*)
 
@@ -102,7 +132,8 @@ $(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*
 define net_fuzz_run
 	@p=0; f=0; for t in $(NET_FUZZERS); do \
 	    mkdir -p $(NET_BUILD)/fuzz/corpus-$$t; \
-	    out=$$(cd $(NET_BUILD)/fuzz && ./fuzz_$$t -runs=$(1) -seed=1 corpus-$$t 2>&1); r=$$?; \
+	    runs=$(1); if [ $$t = fec ]; then runs=$$(($(1) / $(NET_FUZZ_FEC_DIV))); fi; \
+	    out=$$(cd $(NET_BUILD)/fuzz && ./fuzz_$$t -runs=$$runs -seed=1 corpus-$$t 2>&1); r=$$?; \
 	    echo "$$out" | tail -2 | sed "s/^/fuzz_$$t: /"; \
 	    if [ $$r -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); \
 	        echo "fuzz_$$t: FINDING (crash file in $(NET_BUILD)/fuzz)"; fi; \
@@ -129,11 +160,28 @@ XDR_BOUND ?= 40
 NET_CBMC_XDR := --function harness $(NET_CBMC_CHECKS) --unwind $$(($(XDR_BOUND) + 6)) \
                 --unwinding-assertions -DXDR_BOUND=$(XDR_BOUND) -I $(ROOT) \
                 net/proofs/xdr_decode_harness.c net/xdr.c
+# The FEC receiver (interrupt half): the same induction over byte sequences.
+NET_CBMC_FEC_RX := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 260 \
+                   --unwinding-assertions -I $(ROOT) net/proofs/fec_rx_harness.c net/fec.c \
+                   net/rs.c net/crc16.c
+# The Reed-Solomon decoder on every 28-byte codeword, GF(256) over-approximated
+# (RS_GF_ABSTRACT, see rs.c) ...
+NET_CBMC_RS_DECODE := --function harness $(NET_CBMC_CHECKS) --unwind 40 \
+                      --unwindset gf_init.0:256,gf_init.1:256 --unwinding-assertions \
+                      -DRS_GF_ABSTRACT -I $(ROOT) net/proofs/rs_decode_harness.c net/rs.c
+# ... and the real GF(256) operations in bounds for every operand.
+NET_CBMC_RS_GF := --function harness $(NET_CBMC_CHECKS) --unwind 256 --unwinding-assertions \
+                  -I $(ROOT) net/proofs/rs_gf_harness.c
+NET_CBMC_RUNS := FRAME XDR FEC_RX RS_DECODE RS_GF
 check-net-cbmc:
 	@$(SETUP) cbmc
-	@p=0; f=0; for run in FRAME XDR; do \
-	    if [ $$run = FRAME ]; then args="$(NET_CBMC_FRAME)"; else args="$(NET_CBMC_XDR)"; fi; \
-	    out=$$($(NET_CBMC) $$args 2>&1); \
+	@p=0; f=0; for run in $(NET_CBMC_RUNS); do \
+	    case $$run in \
+	        FRAME) args="$(NET_CBMC_FRAME)";; XDR) args="$(NET_CBMC_XDR)";; \
+	        FEC_RX) args="$(NET_CBMC_FEC_RX)";; RS_DECODE) args="$(NET_CBMC_RS_DECODE)";; \
+	        RS_GF) args="$(NET_CBMC_RS_GF)";; \
+	    esac; \
+	    out=$$(nice -n 19 $(NET_CBMC) $$args 2>&1); \
 	    echo "$$out" | grep -E "^\*\*|VERIFICATION" | sed "s/^/net-cbmc $$run: /"; \
 	    if echo "$$out" | grep -q "VERIFICATION SUCCESSFUL"; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
 	done; $(call record,net-cbmc,$$p,$$f); [ $$f -eq 0 ]

@@ -14,8 +14,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "k_board.h"
-#include "drivers/led.h"
+#include "drivers/board.h"
 #include "eco_program.h"
 #include "pdl/pdl.h"
 
@@ -72,19 +71,11 @@ static void *eco_main(void *arg)
 
 int main(void)
 {
-    k_init();
-    led_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed: no PIT rate for K_TICK_HZ\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
+    board_start("ecosystem");
     k_printf("\nRoboCube firmware: the ecosystem robot (PDL, %u processes)\n",
              (unsigned)ECO_PROCS);
-    if (k_thread_create(&eco_thread, "eco", eco_main, NULL, eco_stack, sizeof eco_stack,
-                        K_PRIO_APP_MIN + 1u) != K_OK) {
-        k_printf("eco: creating the thread failed\n");
-    }
+    (void)board_spawn(&eco_thread, "eco", eco_main, NULL, eco_stack, sizeof eco_stack,
+                      K_PRIO_APP_MIN + 1u);
     k_start();
     return 0;
 }

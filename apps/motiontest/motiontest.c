@@ -27,7 +27,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "k_board.h"
+#include "drivers/board.h"
 #include "drivers/drv_err.h"
 #include "drivers/mc68681.h"
 #include "drivers/motor.h"
@@ -345,15 +345,9 @@ static void *test_main(void *arg)
 
 int main(void)
 {
-    k_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
-    if (k_thread_create(&test_thread, "motiontest", test_main, NULL, test_stack,
-                        sizeof test_stack, K_PRIO_APP_MIN + 1u) != K_OK)
-        k_printf("creating the test thread failed\n");
+    board_start("motiontest");
+    (void)board_spawn(&test_thread, "motiontest", test_main, NULL, test_stack, sizeof test_stack,
+                      K_PRIO_APP_MIN + 1u);
     k_start();
     return 0;
 }

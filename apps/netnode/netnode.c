@@ -16,7 +16,7 @@
  * Every mode runs the echo service and prints the statistics at the end.
  */
 #include "kernel.h"
-#include "k_board.h"
+#include "drivers/board.h"
 #include "net/net.h"
 #include "net/xdr.h"
 
@@ -37,16 +37,19 @@ struct netnode_config {
     uint16_t size;
     uint32_t seed;
     uint32_t linger_ms;      /* SOAK: keep receiving this long after sending */
+    uint8_t flags;           /* NETNODE_FEC: forward error correction on air */
+    uint8_t reserved[3];
 };
+#define NETNODE_FEC 0x1u
 
 /* Patched by the host: keep the layout in step with tools/netpeer/netnode.py. */
 volatile const struct netnode_config netnode_config __attribute__((used, aligned(4))) = {
-    { 'N', 'E', 'T', 'N', 'O', 'D', 'E', '\0' }, 1, MODE_ECHO, 0x0003, 10, 32, 1, 3000
+    { 'N', 'E', 'T', 'N', 'O', 'D', 'E', '\0' }, 1, MODE_ECHO, 0x0003, 10, 32, 1, 3000, 0, { 0, 0, 0 }
 };
 
 static struct netnode_config cfg;
 static struct k_thread echo_thread, soak_rx_thread, sink_thread;
-K_STACK_DEFINE(sink_stack, 1024);
+K_STACK_DEFINE(sink_stack, 1536);   /* 480 B own + 2 nested interrupts of 504 B (make stack) */
 K_STACK_DEFINE(echo_stack, 2048);
 K_STACK_DEFINE(soak_rx_stack, 2048);
 K_STACK_DEFINE(main_stack, 2048);
@@ -198,12 +201,13 @@ static void *main_fn(void *arg)
 {
     int rc;
     (void)arg;
-    rc = net_init(cfg.station, cfg.seed);
+    rc = net_init_flags(cfg.station, cfg.seed, (cfg.flags & NETNODE_FEC) != 0u ? NET_FEC : 0u);
     if (rc != K_OK) {
         k_printf("netnode: net_init failed (%d)\n", rc);
         return NULL;
     }
-    k_printf("netnode: station %u up, mode %u\n", (unsigned)cfg.station, (unsigned)cfg.mode);
+    k_printf("netnode: station %u up, mode %u%s\n", (unsigned)cfg.station, (unsigned)cfg.mode,
+             (cfg.flags & NETNODE_FEC) != 0u ? ", fec" : "");
     (void)k_thread_create(&echo_thread, "echo", echo_main, NULL, echo_stack,
                           sizeof echo_stack, 10);
     (void)k_thread_create(&soak_rx_thread, "soakrx", soak_rx_main, NULL, soak_rx_stack,
@@ -226,13 +230,8 @@ static void *main_fn(void *arg)
 int main(void)
 {
     cfg = netnode_config;
-    k_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
-    (void)k_thread_create(&main_thread, "main", main_fn, NULL, main_stack, sizeof main_stack, 9);
+    board_start("netnode");
+    (void)board_spawn(&main_thread, "main", main_fn, NULL, main_stack, sizeof main_stack, 9);
     k_start();
     return 0;
 }

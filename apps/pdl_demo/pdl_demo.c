@@ -12,8 +12,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "k_board.h"
-#include "drivers/led.h"
+#include "drivers/board.h"
 #include "pdl/examples/behaviours.h"
 #include "pdl/pdl.h"
 #include "pdl/pdl_board.h"
@@ -62,16 +61,10 @@ static void *demo_main(void *arg)
 
 int main(void)
 {
-    k_init();
-    led_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
+    board_start("pdl_demo");
     k_printf("\nPDL demo: phototaxis, avoidance, wandering, battery motivation\n");
-    if (k_thread_create(&demo_thread, "pdl-demo", demo_main, NULL, demo_stack,
-                        sizeof demo_stack, K_PRIO_APP_MIN + 1u) != K_OK)
+    if (board_spawn(&demo_thread, "pdl-demo", demo_main, NULL, demo_stack, sizeof demo_stack,
+                    K_PRIO_APP_MIN + 1u) != K_OK)
         k_printf("PDL-DEMO failed: thread\n");
     k_start();
     return 0;

@@ -320,18 +320,22 @@ static void cmd_ps(int argc, char **argv, const char *line)
 {
     static struct k_thread_info threads[SHELL_PS_MAX]; /* static: keep the shell's stack small */
     int n = k_thread_list(threads, SHELL_PS_MAX), i;
+    uint32_t irq_size, irq_used;
     (void)argc;
     (void)argv;
     (void)line;
     k_printf("%-14s %4s %-8s %13s %8s\n", "thread", "prio", "state", "stack used", "switches");
     for (i = 0; i < n && i < (int)SHELL_PS_MAX; i++) {
         const struct k_thread_info *t = &threads[i];
-        k_printf("%-14s %4u %-8s %6lu/%-6lu %8lu\n", t->name, t->prio, state_name(t),
+        /* a thread whose guard words broke (stopped by the kernel) is marked */
+        k_printf("%-14s %4u %-8s %6lu/%-6lu %8lu%s\n", t->name, t->prio, state_name(t),
                  (unsigned long)t->stack_used, (unsigned long)t->stack_bytes,
-                 (unsigned long)t->switches_in);
+                 (unsigned long)t->switches_in, t->stack_intact ? "" : " STACK OVERFLOW");
     }
     if (n > (int)SHELL_PS_MAX)
         k_printf("(%d more threads not shown)\n", n - (int)SHELL_PS_MAX);
+    if (k_irq_stack_usage(&irq_size, &irq_used) == K_OK)
+        k_printf("interrupt stack %lu/%lu\n", (unsigned long)irq_used, (unsigned long)irq_size);
 }
 
 static void cmd_uptime(int argc, char **argv, const char *line)

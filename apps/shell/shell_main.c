@@ -16,13 +16,11 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "k_board.h"
+#include "drivers/board.h"
 #include "shell.h"
 #include "drivers/board_io.h"
 #include "drivers/console_in.h"
 #include "drivers/drv_err.h"
-#include "drivers/duart_console.h"
-#include "drivers/led.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 
@@ -62,26 +60,16 @@ static void *shell_main(void *arg)
     return NULL;
 }
 
-static void halt(const char *why)
-{
-    console_puts(why);
-    for (;;) {
-    }
-}
-
 int main(void)
 {
-    k_init();
-    led_init();
-    if (k_board_init() != 0)
-        halt("shell: k_board_init failed: no PIT rate for K_TICK_HZ\n");
+    board_start("shell");
     if (tpu_init() < 0)
-        halt("shell: tpu_init failed\n");
+        board_halt("shell", "tpu_init failed\n");
     if (motor_init() < 0)
-        halt("shell: motor_init failed\n");
-    if (k_thread_create(&shell_thread, "shell", shell_main, NULL, shell_stack,
-                        sizeof shell_stack, SHELL_PRIO) != K_OK)
-        halt("shell: cannot create the shell thread\n");
+        board_halt("shell", "motor_init failed\n");
+    if (board_spawn(&shell_thread, "shell", shell_main, NULL, shell_stack, sizeof shell_stack,
+                    SHELL_PRIO) != K_OK)
+        board_halt("shell", "no shell thread\n");
     k_start();
     return 0;
 }

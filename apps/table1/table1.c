@@ -27,6 +27,7 @@
 
 #include "bsched.h"
 #include "kernel.h"
+#include "drivers/board.h"
 #include "k_board.h"
 #include "k_bsched.h"
 #include "drivers/duart_console.h"
@@ -189,12 +190,9 @@ static void *table1_main(void *arg)
              (unsigned long)bsched_thread.overruns, (unsigned long)bsched_thread.max_cycle_ticks,
              (unsigned long)k_board_console_dropped());
 
-    r = k_thread_create(&led_thread, "led", led_main, NULL, led_stack, sizeof led_stack,
-                        K_PRIO_APP_MIN);
-    if (r != K_OK) {
-        k_printf("creating the LED thread failed: %d\n", r);
+    if (board_spawn(&led_thread, "led", led_main, NULL, led_stack, sizeof led_stack,
+                    K_PRIO_APP_MIN) != K_OK)
         return NULL;
-    }
     k_printf("table1 done at tick %lu (%lu ms); LED thread blinks at 1 Hz\n",
              (unsigned long)k_ticks(), (unsigned long)k_uptime_ms());
     return NULL;
@@ -202,13 +200,7 @@ static void *table1_main(void *arg)
 
 int main(void)
 {
-    k_init();
-    led_init();
-    if (k_board_init() != 0) {
-        static const char msg[] = "k_board_init failed: no PIT rate for K_TICK_HZ\n";
-        k_console_write_sync(msg, sizeof msg - 1u);
-        return 1;
-    }
+    board_start("table1");
     /* Queued in the console ring; goes out once k_start enables interrupts. */
     k_printf("\nRoboCube firmware: B-scheduler, Table 1 process set\n");
     k_printf("nanokernel: tick %lu Hz, B-scheduler thread at priority %u, %lu tick per minor cycle\n",
@@ -218,10 +210,8 @@ int main(void)
              "bsched capacity %u\n",
              (unsigned long)CPU_CLOCK_HZ, (unsigned long)K_TICK_HZ, (unsigned long)CONSOLE_BAUD,
              (unsigned)BSCHED_MAX_PROCS);
-    if (k_thread_create(&table1_thread, "table1", table1_main, NULL, table1_stack,
-                        sizeof table1_stack, K_PRIO_APP_MIN + 1u) != K_OK) {
-        k_printf("creating the table1 thread failed\n");
-    }
+    (void)board_spawn(&table1_thread, "table1", table1_main, NULL, table1_stack,
+                      sizeof table1_stack, K_PRIO_APP_MIN + 1u);
     k_start();
     return 0;
 }

@@ -27,6 +27,7 @@ import subprocess
 import tempfile
 import time
 
+from qemu.qmp import QMPError
 from qemu.qmp.legacy import QEMUMonitorProtocol
 
 
@@ -53,6 +54,23 @@ def qemu_binary():
 
 class QTestError(RuntimeError):
     pass
+
+
+def qmp_connect(path, proc=None, timeout=10.0):
+    """A QMP client (qemu.qmp) of a QEMU started with -qmp unix:PATH,server=on,wait=off,
+    capabilities negotiated. The socket file can appear before QEMU listens on it, so
+    the connection is retried until `timeout` seconds pass or `proc` (the QEMU) exits."""
+    deadline = time.monotonic() + timeout
+    while True:
+        qmp = QEMUMonitorProtocol(str(path))
+        try:
+            qmp.connect()
+            return qmp
+        except QMPError as e:
+            qmp.close()
+            if time.monotonic() > deadline or (proc is not None and proc.poll() is not None):
+                raise QTestError(f"QMP socket {path} did not open within {timeout} s: {e}") from e
+            time.sleep(0.02)
 
 
 class SerialPort:

@@ -30,12 +30,11 @@ ICOUNT = "shift=8,sleep=off"
 # started its PIT (the lockstep device's origin-ns). Between a tick and the
 # next boundary the firmware does its I/O: the PDL cycle (snapshot in, motor
 # writes out) right after the tick and the sampler's sweep of the converters
-# (6.0 ms, drivers/README.md). So no read or write comes near a boundary,
-# and the slight variation of guest timing around stops (emu/README.md)
-# cannot decide on which side of a boundary a value falls. Measured, six
-# 1.5 s runs each: boundaries at an arbitrary phase, 3.9 ms or 1 ms before
-# the ticks gave two different trajectories (writes during the drivers'
-# start-up fall there); 0.2 ms before the ticks, six identical.
+# (6.0 ms, drivers/README.md). So the inputs of a step are in place just before
+# the cycle that reads them, and all the motor writes of that cycle are seen at
+# the next boundary: one step of latency each way, never a split cycle. (Runs
+# are reproducible with boundaries at any phase, emu/README.md; the placement
+# is for the latency.)
 TICK_LEAD_NS = 200_000
 STEP_NS = 7_812_500
 FRAME_TIMEOUT_S = 60.0

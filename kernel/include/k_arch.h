@@ -7,6 +7,7 @@
 #ifndef K_ARCH_H
 #define K_ARCH_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include "k_arch_ctx.h"
 
@@ -27,6 +28,11 @@ void k_arch_thread_init(struct k_thread *t);
 void k_arch_switch(struct k_thread *from, struct k_thread *to);
 /* The idle thread's body between checks: wait for an interrupt. */
 void k_arch_idle(void);
+/* Stops the system for good (interrupts masked): after a fatal report. */
+void k_arch_halt(void) __attribute__((noreturn));
+/* The port's interrupt stack (*words long, guard words at the low end), or
+ * NULL when interrupts run on the thread stacks. */
+const uint32_t *k_arch_irq_stack(size_t *words);
 /* Routes exception vector `vector` through the kernel's interrupt entry
  * (which calls k_isr_enter, the registered handler, k_isr_exit). */
 int k_arch_irq_route(unsigned vector);
@@ -35,7 +41,9 @@ int k_arch_irq_route(unsigned vector);
 void k_thread_start(void);
 /* Dispatches the handler registered for vector (from the interrupt entry). */
 void k_irq_dispatch(unsigned vector);
-/* k_isr_enter, k_irq_dispatch, k_isr_exit: the whole interrupt, for the entry. */
+/* k_isr_enter, k_irq_dispatch, k_isr_exit: the whole interrupt, for an entry
+ * that runs handlers on the interrupted stack (the host port; the CPU32 entry
+ * has its own interrupt stack and sequence, switch.S). */
 void k_isr_run(unsigned vector);
 
 #endif /* K_ARCH_H */

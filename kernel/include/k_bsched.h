@@ -10,10 +10,14 @@
  * reporter thread just below the B-scheduler thread's priority, so that the
  * report (about a millisecond of output formatting) never delays a cycle;
  * its line names the overrun cycle, how late it ended and the totals.
- * A cycle that is still running when its successor is due is also announced
- * at that tick, from the tick interrupt (k_tick_hook), so that a cycle that
+ * The reporter prints at most one burst of lines every
+ * K_BSCHED_REPORT_INTERVAL_TICKS (1 s by default) and sums what happens in
+ * between, so under continuous overrun it cannot starve the threads below it.
+ * A cycle that is still running when its successor is due is noticed at
+ * that tick by the tick hook (k_tick_hook), which only counts it and wakes
+ * the reporter, lending it a priority above the cycle's so that a cycle that
  * never ends is not silent either: "bsched: minor cycle C still running at
- * its successor's release (tick T)".
+ * its successor's release (tick T)". No console output from the tick.
  */
 #ifndef K_BSCHED_H
 #define K_BSCHED_H
@@ -41,8 +45,14 @@ struct k_bsched {
     int finished;
     volatile int in_cycle;        /* a minor cycle is running */
     volatile k_ticks_t watch;     /* tick at which a running cycle overruns */
-    volatile uint32_t stuck_reports; /* "still running" announcements */
-    struct k_sem report_sem;
+    volatile uint32_t stuck_reports; /* cycles found still running at their successor's release */
+    volatile uint32_t stuck_cycle;   /* the last such cycle, and the tick it was found at */
+    volatile k_ticks_t stuck_tick;
+    uint32_t stuck_printed;       /* stuck_reports when the reporter last printed */
+    uint32_t report_lines;        /* lines the reporter printed */
+    k_ticks_t next_report;        /* the reporter prints nothing before this tick */
+    struct k_sem report_sem;      /* binary: something to report */
+    struct k_sem finish_sem;      /* binary: the thread ended (cuts the reporter's interval short) */
     struct k_thread reporter;
     uint32_t reporter_stack[K_STACK_WORDS(K_BSCHED_REPORTER_STACK_BYTES)] __attribute__((aligned(4)));
 };

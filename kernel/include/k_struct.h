@@ -115,5 +115,6 @@ int k_msgbuf_get(struct k_msgbuf *b, void *msg);
 /* Freestanding byte copy and fill (no libc on the target). */
 void k_memcpy(void *dst, const void *src, size_t n);
 void k_memset(void *dst, int value, size_t n);
+size_t k_strlen(const char *s);
 
 #endif /* K_STRUCT_H */

@@ -110,6 +110,10 @@ struct k_thread {
     struct k_waitq joiners;
     uint32_t switches_in;        /* times this thread was switched to */
     struct k_thread *all_next;   /* every created thread, for reports */
+    /* Last, so that a stack overflowing into this struct from above breaks it
+     * first: K_THREAD_CANARY ^ the struct's address while the struct is sound.
+     * Pointer-sized, so that no tail padding lies between it and what follows. */
+    uintptr_t canary;
 };
 
 /* Stack storage: K_STACK_DEFINE(name, bytes) gives a 4-byte aligned array
@@ -146,15 +150,22 @@ struct k_thread_info {
     uint32_t stack_bytes;   /* size given to k_thread_create (guard words included) */
     uint32_t stack_used;    /* high-water mark, bytes: the deepest word ever written */
     uint32_t switches_in;   /* times the scheduler switched to it */
+    uint8_t stack_intact;   /* 1 while its stack guard words are unbroken */
 };
 /* Snapshot of every created thread (the idle thread included, most recently
  * created first) into out[0 .. max-1]. Returns the number of threads that
  * exist, which may exceed max (only max are written); K_EINVAL if out is NULL
- * and max > 0. The list is copied with interrupts masked; the stack
+ * and max > 0. A control block found overwritten (its canary broken) halts
+ * the system with a report, as at a switch (the list runs through it).
+ * The list is copied with interrupts masked; the stack
  * high-water marks are measured afterwards with interrupts enabled, from
  * the fill k_thread_create writes (so the mark is a lower bound: a stack
  * word written with the fill value itself is not counted). */
 int k_thread_list(struct k_thread_info *out, unsigned max);
+/* The interrupt stack of the port (CPU32: K_IRQ_STACK_BYTES): its size and
+ * high-water mark in bytes. K_ESRCH on a port whose handlers run on the
+ * thread stacks; K_EINVAL for NULL. */
+int k_irq_stack_usage(uint32_t *bytes, uint32_t *used);
 
 /* ---- counting semaphores ---- */
 struct k_sem {
@@ -231,6 +242,12 @@ typedef void (*k_irq_handler)(void *arg);
 int k_irq_register(unsigned vector, unsigned level, k_irq_handler handler, void *arg);
 /* Non-zero inside an interrupt handler. */
 int k_in_isr(void);
+/* For a driver's own interrupt handler (claimed in the vector table, not
+ * through k_irq_register) once it has masked all interrupt levels: runs
+ * fn(arg) as the kernel runs a registered handler (on the interrupt stack
+ * where the port has one; fn may post, set events, send with K_NO_WAIT) and
+ * switches to a thread it woke on the way out. */
+void k_isr_call(void (*fn)(void *arg), void *arg);
 /* Called by the interrupt entry around every handler. */
 void k_isr_enter(void);
 void k_isr_exit(void);

@@ -207,6 +207,38 @@ static void test_packet_reassembly_errors(void **state)
     assert_int_equal(packet_reasm_add(&r, f.payload, 1), PACKET_ERROR);       /* runt */
 }
 
+/* The fragments after the first go out as a burst right after each ACK;
+ * first fragments and retransmissions do not (mac_begin_burst). */
+static void test_fragments_after_an_ack_are_a_burst(void **state)
+{
+    static uint8_t msg[300];
+    struct frame data, ack;
+    uint32_t now = 0;
+    (void)state;
+    assert_int_equal(link_send(&st[0].link, 1, 2, msg, sizeof msg, LINK_RELIABLE, now), LINK_OK);
+    assert_int_equal(st[0].nq, 1);
+    data = st[0].q[0];
+    st[0].nq = 0;
+    assert_false(link_is_burst(&st[0].link, &data));            /* first fragment */
+    link_frame_done(&st[0].link, LINK_DATA, now);
+    link_receive(&st[1].link, &data, now);
+    assert_int_equal(st[1].nq, 1);
+    ack = st[1].q[0];
+    st[1].nq = 0;
+    assert_int_equal(ack.type, LINK_ACK);
+    assert_false(link_is_burst(&st[1].link, &ack));
+    link_receive(&st[0].link, &ack, now + 20u);
+    assert_int_equal(st[0].nq, 1);
+    data = st[0].q[0];
+    st[0].nq = 0;
+    assert_true(link_is_burst(&st[0].link, &data));             /* second, after the ACK */
+    link_frame_done(&st[0].link, LINK_DATA, now + 20u);
+    (void)link_poll(&st[0].link, now + 20u + 2u * LINK_RTO_MS);  /* no ACK: retransmitted */
+    assert_int_equal(st[0].nq, 1);
+    assert_int_equal(st[0].q[0].seq, data.seq);
+    assert_false(link_is_burst(&st[0].link, &st[0].q[0]));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -216,6 +248,7 @@ int main(void)
         cmocka_unit_test_setup(test_broadcast_and_datagram, setup),
         cmocka_unit_test_setup(test_bad_arguments, setup),
         cmocka_unit_test_setup(test_packet_reassembly_errors, setup),
+        cmocka_unit_test_setup(test_fragments_after_an_ack_are_a_burst, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

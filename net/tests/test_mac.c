@@ -85,6 +85,28 @@ static void test_seeds_differ(void **state)
     assert_int_not_equal(mac_random(&a), 0);
 }
 
+static void test_burst_skips_the_initial_wait_and_waits_out_the_ack(void **state)
+{
+    struct mac m;
+    uint32_t w = 0;
+    unsigned i;
+    (void)state;
+    mac_init(&m, 7);
+    mac_begin_burst(&m);
+    assert_int_equal(mac_decide(&m, 0, 0, &w), MAC_SEND);       /* idle: at once */
+    mac_begin_burst(&m);
+    for (i = 0; i < MAC_BURST_RETRIES; i++) {                   /* busy: the ACK's tail */
+        assert_int_equal(mac_decide(&m, 1, 0, &w), MAC_WAIT);
+        assert_int_equal(w, MAC_ACK_RETRY_MS);
+    }
+    assert_int_equal(mac_decide(&m, 1, 0, &w), MAC_WAIT);       /* then a data backoff */
+    assert_true(w >= MAC_SLOT_MS && w <= MAC_CW_MAX * MAC_SLOT_MS);
+    mac_begin(&m);                                              /* the next frame: normal */
+    (void)mac_decide(&m, 0, 0, &w);
+    assert_int_equal(mac_decide(&m, 1, 0, &w), MAC_WAIT);
+    assert_true(w >= MAC_SLOT_MS);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -93,6 +115,7 @@ int main(void)
         cmocka_unit_test(test_busy_channel_bounded),
         cmocka_unit_test(test_ack_retries_quickly_and_bounded),
         cmocka_unit_test(test_seeds_differ),
+        cmocka_unit_test(test_burst_skips_the_initial_wait_and_waits_out_the_ack),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

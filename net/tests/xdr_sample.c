@@ -6,34 +6,12 @@
 #include <stdio.h>
 #include <string.h>
 #include "net/xdr.h"
-
-struct sample {
-    int32_t i, b, e;
-    uint32_t u, var_len, arr_len;
-    int64_t h;
-    uint64_t uh;
-    float f;
-    double d;
-    uint8_t fixed[5], var[16];
-    char str[32];
-    int32_t arr[6];
-};
-
-static int elem(struct nxdr *x, void *p) { return nxdr_int(x, p); }
-
-static int codec(struct nxdr *x, struct sample *s)
-{
-    return nxdr_int(x, &s->i) && nxdr_u_int(x, &s->u) && nxdr_hyper(x, &s->h) &&
-           nxdr_u_hyper(x, &s->uh) && nxdr_bool(x, &s->b) && nxdr_enum(x, &s->e) &&
-           nxdr_float(x, &s->f) && nxdr_double(x, &s->d) && nxdr_opaque(x, s->fixed, 5) &&
-           nxdr_bytes(x, s->var, &s->var_len, 16) && nxdr_string(x, s->str, 31) &&
-           nxdr_array(x, s->arr, &s->arr_len, 6, sizeof(int32_t), elem);
-}
+#include "xdr_sample.h"
 
 int main(int argc, char **argv)
 {
     uint8_t buf[512];
-    struct sample s;
+    struct xdr_sample s;
     struct nxdr x;
     size_t i, n;
     memset(&s, 0, sizeof s);
@@ -45,7 +23,7 @@ int main(int argc, char **argv)
         strcpy(s.str, "radio");
         s.arr_len = 4; s.arr[0] = 1; s.arr[1] = -1; s.arr[2] = 65536; s.arr[3] = -65536;
         nxdr_init_encode(&x, buf, sizeof buf);
-        if (!codec(&x, &s))
+        if (!xdr_sample_codec(&x, &s))
             return 1;
         for (i = 0; i < nxdr_getpos(&x); i++)
             printf("%02x", buf[i]);
@@ -63,7 +41,7 @@ int main(int argc, char **argv)
             buf[i] = (uint8_t)v;
         }
         nxdr_init_decode(&x, buf, n);
-        if (!codec(&x, &s) || nxdr_getpos(&x) != n)
+        if (!xdr_sample_codec(&x, &s) || nxdr_getpos(&x) != n)
             return 3;
         printf("%d\n%u\n%lld\n%llu\n%d\n%d\n%.9g\n%.17g\n%.5s\n", s.i, s.u, (long long)s.h,
                (unsigned long long)s.uh, s.b, s.e, (double)s.f, s.d, (char *)s.fixed);

@@ -12,6 +12,7 @@ def main(argv=None):
     where.add_argument("--serial", help="a serial port with a real radio module")
     ap.add_argument("--station", type=int, required=True)
     ap.add_argument("--baud", type=int, default=19200)
+    ap.add_argument("--fec", action="store_true", help="Reed-Solomon frames (boards with NET_FEC)")
     sub = ap.add_subparsers(dest="cmd", required=True)
     s = sub.add_parser("send")
     s.add_argument("dst", type=int)
@@ -25,8 +26,12 @@ def main(argv=None):
     l.add_argument("--count", type=int, default=0, help="stop after this many (0: forever)")
     l.add_argument("--timeout", type=float, default=None)
     a = ap.parse_args(argv)
-    t = MediumTransport(a.socket, a.baud) if a.socket else SerialTransport(a.serial, a.baud)
-    with Peer(t, a.station) as p:
+    try:
+        t = MediumTransport(a.socket, a.baud) if a.socket else SerialTransport(a.serial, a.baud)
+    except (OSError, ValueError) as e:            # pyserial's SerialException is an OSError
+        print(f"netpeer: cannot reach the air at {a.socket or a.serial}: {e}", file=sys.stderr)
+        return 2
+    with Peer(t, a.station, fec=a.fec) as p:
         if a.cmd == "send":
             try:
                 p.send(a.dst, a.port, a.text.encode(), reliable=not a.datagram)

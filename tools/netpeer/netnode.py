@@ -9,7 +9,8 @@ import time
 MAGIC = b"NETNODE\0"
 MODES = {"soak": 1, "echo": 2, "bench": 3}
 # struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
-CONFIG = struct.Struct(">BBHHHII")
+CONFIG = struct.Struct(">BBHHHIIB3x")
+FLAG_FEC = 0x1
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # The firmware's usual deterministic setting (2^8 ns per instruction, idle
@@ -20,7 +21,7 @@ SYNC_NS = 500_000
 
 
 def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
-                 seed=1, linger_ms=3000):
+                 seed=1, linger_ms=3000, fec=False):
     data = bytearray(open(elf_in, "rb").read())
     at = data.find(MAGIC)
     if at < 0 or data.find(MAGIC, at + 1) >= 0:
@@ -28,7 +29,8 @@ def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, s
     mask = 0
     for p in peers:
         mask |= 1 << p
-    cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms)
+    cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms,
+                      FLAG_FEC if fec else 0)
     data[at + len(MAGIC):at + len(MAGIC) + CONFIG.size] = cfg
     with open(elf_out, "wb") as f:
         f.write(data)
@@ -39,7 +41,10 @@ def qemu_binary():
 
 
 class Board:
-    """One emulated RoboCube whose radio joins the medium at `medium_sock`."""
+    """One emulated RoboCube whose radio joins the medium at `medium_sock`; or,
+    with medium_sock None, whose DUART channel A is a plain wire to a host
+    pseudo-terminal (pty_path(): what a serial adapter would be), with the
+    virtual clock near the wall clock (sleep=on) since no lock step paces it."""
 
     def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, sync_ns=SYNC_NS,
                  **config):
@@ -48,13 +53,17 @@ class Board:
         patch_config(elf, self.elf, station, **config)
         self.console = bytearray()
         self.lock = threading.Lock()
+        if medium_sock is None:
+            radio = ["-serial", "pty"]
+            icount = icount.replace("sleep=off", "sleep=on")
+        else:
+            radio = ["-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
+                     "-serial", "chardev:air",
+                     "-global", "mc68681-duart.radio-medium=on",
+                     "-global", f"mc68681-duart.radio-station={station}",
+                     "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
         cmd = [qemu_binary(), "-M", "robocube", "-icount", icount, "-kernel", self.elf,
-               "-display", "none", "-monitor", "none", "-serial", "stdio",
-               "-chardev", f"socket,id=air,path={medium_sock},reconnect=1",
-               "-serial", "chardev:air",
-               "-global", "mc68681-duart.radio-medium=on",
-               "-global", f"mc68681-duart.radio-station={station}",
-               "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
+               "-display", "none", "-monitor", "none", "-serial", "stdio"] + radio
         self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                      stderr=subprocess.STDOUT)
         self.reader = threading.Thread(target=self._read, daemon=True)
@@ -79,6 +88,17 @@ class Board:
             time.sleep(0.05)
         return False
 
+    def pty_path(self, timeout=10):
+        """The pseudo-terminal QEMU made for channel A (medium_sock None)."""
+        import re
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            m = re.search(r"char device redirected to (/dev/pts/\d+)", self.text())
+            if m:
+                return m[1]
+            time.sleep(0.05)
+        raise RuntimeError("no pty for channel A:\n" + self.text())
+
     def stop(self):
         if self.proc.poll() is None:
             self.proc.terminate()
@@ -90,10 +110,11 @@ class Board:
 
 
 class MediumProcess:
-    def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=()):
+    def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=(),
+                 byte_errors=0.0):
         cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
                "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
-               "--noise", str(noise)]
+               "--noise", str(noise), "--byte-errors", str(byte_errors), "--sync-ns", str(SYNC_NS)]
         if os.environ.get("NET_MEDIUM_TRACE"):
             cmd.append("--trace")
         for a, b in out_of_range:

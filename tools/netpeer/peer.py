@@ -4,8 +4,8 @@ import random
 import threading
 import time
 
-from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, Frame,
-                       FrameDecoder, Reassembly, encode_frame, fragments)
+from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, FecDecoder, Frame,
+                       FrameDecoder, Reassembly, encode_frame, encode_frame_fec, fragments)
 
 RTO, RTO_MAX, MAX_RETRIES = 0.25, 1.0, 8
 MAX_STATIONS = 16
@@ -16,13 +16,15 @@ class Unreachable(Exception):
 
 
 class Peer:
-    def __init__(self, transport, station, seed=None):
+    def __init__(self, transport, station, seed=None, fec=False):
+        """fec: Reed-Solomon frames (net/fec.h), as boards started with NET_FEC."""
         if not 0 <= station < MAX_STATIONS:
             raise ValueError(f"station {station}: 0..{MAX_STATIONS - 1}")
         self.t = transport
         self.station = station
         self.rng = random.Random(seed if seed is not None else station)
-        self.decoder = FrameDecoder()
+        self.decoder = FecDecoder() if fec else FrameDecoder()
+        self.encode = encode_frame_fec if fec else encode_frame
         self.tx_seq = [0] * MAX_STATIONS
         self.rx_last = [None] * MAX_STATIONS
         self.reasm = [Reassembly() for _ in range(MAX_STATIONS)]
@@ -49,11 +51,12 @@ class Peer:
         self.reader.join(timeout=2)
 
     # -- air ------------------------------------------------------------------
-    def _transmit(self, frame, is_ack=False):
-        data = encode_frame(frame) + b"\x55"
+    def _transmit(self, frame, is_ack=False, burst=False):
+        data = self.encode(frame) + b"\x55"
         with self.tx_lock:
-            # Listen before talk, as net/mac.c (initial wait for data frames).
-            if not is_ack:
+            # Listen before talk, as net/mac.c (initial wait for data frames,
+            # except a fragment right after its predecessor's ACK: link_is_burst).
+            if not is_ack and not burst:
                 time.sleep(self.rng.randrange(0, 5) * 0.003)
             for attempt in range(12):
                 if not self.t.carrier:
@@ -111,16 +114,17 @@ class Peer:
         if not 0 <= dst < MAX_STATIONS or dst == self.station:
             raise ValueError(f"destination {dst}")
         with self.send_lock:
-            for payload in fragments(data, port):
-                self._send_fragment(dst, payload)
+            for i, payload in enumerate(fragments(data, port)):
+                self._send_fragment(dst, payload, burst=i > 0)
 
-    def _send_fragment(self, dst, payload):
+    def _send_fragment(self, dst, payload, burst=False):
         seq = self.tx_seq[dst]
         rto = RTO
         for attempt in range(MAX_RETRIES + 1):
             if attempt:
                 self.stats["retransmissions"] += 1
-            self._transmit(Frame(self.station, dst, DATA, seq, payload))
+            self._transmit(Frame(self.station, dst, DATA, seq, payload),
+                           burst=burst and attempt == 0)
             deadline = time.monotonic() + rto * (1 + self.rng.random() / 4)
             while True:
                 left = deadline - time.monotonic()

@@ -48,7 +48,15 @@ def encode_frame(f):
     return PREAMBLE + bytes((FLAG,)) + _stuff(body + bytes((c >> 8, c & 0xFF))) + bytes((FLAG,))
 
 
-class FrameDecoder:
+class ByteReceiver:
+    """A receiver fed one byte at a time: byte(b) returns a completed frame or None."""
+
+    def feed(self, data):
+        """Returns the good frames completed by data."""
+        return [f for f in map(self.byte, data) if f is not None]
+
+
+class FrameDecoder(ByteReceiver):
     """The receive state machine of net/frame.c, one byte at a time."""
     HUNT, BODY, ESCAPED = 0, 1, 2
 
@@ -56,15 +64,6 @@ class FrameDecoder:
         self.state = self.HUNT
         self.body = bytearray()
         self.frames = self.crc_errors = self.malformed = 0
-
-    def feed(self, data):
-        """Returns the good frames completed by data."""
-        out = []
-        for b in data:
-            f = self.byte(b)
-            if f is not None:
-                out.append(f)
-        return out
 
     def byte(self, b):
         if b == FLAG:
@@ -148,3 +147,89 @@ class Reassembly:
             self.active = False
             return port, bytes(self.data)
         return None
+
+
+# ---- forward error correction on air (net/fec.h) ----------------------------
+FEC_K, FEC_NSYM = 16, 12
+FEC_N = FEC_K + FEC_NSYM
+FEC_COPIES = 5
+FEC_CW_MAX = -(-(1 + BODY_MAX) // FEC_K)
+_rs = None
+
+
+def _codec():
+    """reedsolo's RSCodec(12): GF(256), 0x11D, generator 2, first root alpha^0,
+    the code of net/rs.c (checked against each other in net/tests)."""
+    global _rs
+    if _rs is None:
+        import reedsolo
+        _rs = reedsolo.RSCodec(FEC_NSYM)
+    return _rs
+
+
+def encode_frame_fec(f):
+    """On-air bytes of f with FEC (net/fec.h): preamble, flag, the codeword
+    count five times, the Reed-Solomon codewords of L + body."""
+    if len(f.payload) > PAYLOAD_MAX:
+        raise ValueError(f"payload of {len(f.payload)} bytes > {PAYLOAD_MAX}")
+    body = bytes((f.src, f.dst, f.type, f.seq)) + bytes(f.payload)
+    c = crc16(body)
+    body += bytes((c >> 8, c & 0xFF))
+    ncw = -(-(1 + len(body)) // FEC_K)
+    plain = (bytes((len(body),)) + body).ljust(ncw * FEC_K, b"\0")
+    out = bytearray(PREAMBLE + bytes((FLAG,)) + bytes((ncw,)) * FEC_COPIES)
+    for i in range(ncw):
+        out += _codec().encode(plain[i * FEC_K:(i + 1) * FEC_K])
+    return bytes(out)
+
+
+class FecDecoder(ByteReceiver):
+    """The receiver of net/fec.c: collects a frame's codewords after the flag
+    and the voted codeword count, then corrects them with reedsolo."""
+
+    def __init__(self):
+        self.state, self.copies, self.raw, self.need = "hunt", [], bytearray(), 0
+        self.frames = self.corrected = self.uncorrectable = self.bad_frames = 0
+        self.bad_count = 0
+
+    def byte(self, b):
+        if self.state == "count":
+            self.copies.append(b)
+            if len(self.copies) < FEC_COPIES:
+                return None
+            votes = [c for c in self.copies if 1 <= c <= FEC_CW_MAX and self.copies.count(c) >= 2]
+            if not votes:
+                self.bad_count += 1
+                self.state = "hunt"
+                return None
+            self.need, self.raw, self.state = votes[0] * FEC_N, bytearray(), "data"
+            return None
+        if self.state == "data":
+            self.raw.append(b)
+            if len(self.raw) < self.need:
+                return None
+            self.state = "hunt"
+            return self.decode(bytes(self.raw))
+        if b == FLAG:
+            self.state, self.copies = "count", []
+        return None
+
+    def decode(self, raw):
+        import reedsolo
+        plain = bytearray()
+        for i in range(len(raw) // FEC_N):
+            try:
+                msg, _, errata = _codec().decode(raw[i * FEC_N:(i + 1) * FEC_N])
+            except reedsolo.ReedSolomonError:
+                self.uncorrectable += 1
+                return None
+            plain += msg
+            self.corrected += len(errata)
+        n = plain[0]
+        if (n < HEADER_LEN + CRC_LEN or n > BODY_MAX or -(-(1 + n) // FEC_K) * FEC_N != len(raw)
+                or crc16(plain[1:1 + n]) != 0):
+            self.bad_frames += 1
+            return None
+        body = plain[1:1 + n]
+        self.frames += 1
+        return Frame(body[0], body[1], body[2], body[3], bytes(body[4:-2]))

@@ -45,7 +45,7 @@ def run(args):
     workdir = tempfile.mkdtemp(prefix="net-soak-")
     sock = os.path.join(workdir, "air.sock")
     medium = MediumProcess(sock, seed=args.seed, loss=args.loss, corrupt=args.corrupt,
-                           noise=args.noise)
+                           noise=args.noise, byte_errors=args.byte_errors)
     stations = list(range(args.boards)) + ([HOST_STATION] if not args.no_host else [])
     elf = args.elf
     boards = []
@@ -56,9 +56,9 @@ def run(args):
         for s in range(args.boards):
             boards.append(Board(elf, s, sock, workdir, mode="soak", peers=stations,
                                 messages=args.messages, seed=args.seed + s,
-                                linger_ms=args.linger * 1000))
+                                linger_ms=args.linger * 1000, fec=args.fec))
         if not args.no_host:
-            peer = Peer(MediumTransport(sock), HOST_STATION, seed=args.seed)
+            peer = Peer(MediumTransport(sock), HOST_STATION, seed=args.seed, fec=args.fec)
             for s in range(args.boards):
                 host["next"][s] = host["inorder"][s] = host["dup"][s] = 0
 
@@ -121,6 +121,7 @@ def run(args):
     lost = expected - delivered
     print(f"net-soak: {args.boards} boards{' + host peer' if peer else ''}, "
           f"{args.messages} messages per pair, loss {args.loss}, corrupt {args.corrupt}, "
+          f"byte errors {args.byte_errors}, fec {'on' if args.fec else 'off'}, "
           f"seed {args.seed}, {wall:.1f} s wall; medium: " +
           " ".join(f"{k}={v}" for k, v in stats.items()))
     print(f"net-soak: sent {expected}, delivered {delivered}, in order, {dups} duplicates, "
@@ -135,6 +136,8 @@ def main(argv=None):
     ap.add_argument("--loss", type=float, default=0.0)
     ap.add_argument("--corrupt", type=float, default=0.0)
     ap.add_argument("--noise", type=float, default=0.0)
+    ap.add_argument("--byte-errors", type=float, default=0.0, help="per character (medium)")
+    ap.add_argument("--fec", action="store_true", help="Reed-Solomon frames on every station")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=300.0)
     ap.add_argument("--linger", type=int, default=60, help="s a board waits for its peers")
@@ -145,8 +148,8 @@ def main(argv=None):
     args = ap.parse_args(argv)
     if not 2 <= args.boards <= 4:
         ap.error("BOARDS is 2 to 4")
-    if not 0 <= args.loss <= 1 or not 0 <= args.corrupt <= 1:
-        ap.error("LOSS and CORRUPT are probabilities 0..1")
+    if not all(0 <= p <= 1 for p in (args.loss, args.corrupt, args.byte_errors, args.noise)):
+        ap.error("LOSS, CORRUPT, BYTE_ERRORS and NOISE are probabilities 0..1")
     return run(args)
 
 

@@ -3,16 +3,21 @@ import socket
 import threading
 import time
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO = 0, 1, 2
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE = 0, 1, 2, 4
 SEL_RX, SEL_TX = 1, 2
 
 
 class MediumTransport:
     """A station on emu/radio_medium.py (its 2-byte message protocol).
-    Transmissions are paced at the baud rate in wall time, so the air is
-    busy as long as on the boards."""
+    The medium plays our transmissions in the boards' virtual time when they
+    run in lock step (its docstring, "Pacing"), and tells us when one is over;
+    without boards in lock step we pace in wall time. Either way a transmission
+    occupies the air as long as on the boards, and transmit() returns when it
+    is over."""
 
     def __init__(self, path, baud=19200, connect_timeout=10.0):
+        if not 300 <= baud <= 255 * 300 or baud % 300:
+            raise ValueError(f"baud {baud}: a multiple of 300 up to {255 * 300}")
         deadline = time.monotonic() + connect_timeout
         while True:
             try:
@@ -29,9 +34,13 @@ class MediumTransport:
         self.lock = threading.Lock()
         self.closed = False
         self._pending = b""
+        self._tx_over = threading.Condition()
+        self._tx_over_count = 0
+        self._tx_paced = False
 
     def hello(self, station):
-        self._send(bytes((MSG_HELLO, station, MSG_CONTROL, SEL_RX)))
+        self._send(bytes((MSG_HELLO, station, MSG_PACE, self.baud // 300,
+                          MSG_CONTROL, SEL_RX)))
 
     def _send(self, data):
         with self.lock:
@@ -43,12 +52,22 @@ class MediumTransport:
                 self.closed = True    # the medium is gone: the air is silent
 
     def transmit(self, data):
+        air_time = len(data) * 10 / self.baud
         msgs = bytearray((MSG_CONTROL, SEL_TX))
         for b in data:
             msgs += bytes((MSG_DATA, b))
-        self._send(bytes(msgs))
-        time.sleep(len(data) * 10 / self.baud)
-        self._send(bytes((MSG_CONTROL, SEL_RX)))
+        msgs += bytes((MSG_CONTROL, SEL_RX))
+        start = time.monotonic()
+        with self._tx_over:
+            seen = self._tx_over_count
+            self._send(bytes(msgs))
+            # The medium's word that it is over; bounded, in case it is gone
+            # or the boards stall (then the air is silent anyway).
+            self._tx_over.wait_for(lambda: self._tx_over_count != seen or self.closed,
+                                   timeout=max(10.0, 50 * air_time))
+            paced = self._tx_paced and self._tx_over_count != seen
+        if not paced:
+            time.sleep(max(0.0, start + air_time - time.monotonic()))
 
     def read(self, timeout):
         """Bytes heard within timeout (b'' when none); None when the medium is gone."""
@@ -70,43 +89,70 @@ class MediumTransport:
                 out.append(data[i + 1])
             elif data[i] == MSG_CONTROL:
                 self.carrier = bool(data[i + 1])
+            elif data[i] == MSG_PACE:
+                with self._tx_over:
+                    self._tx_paced = bool(data[i + 1])
+                    self._tx_over_count += 1
+                    self._tx_over.notify_all()
         return bytes(out)
 
     def close(self):
-        self.closed = True
+        with self._tx_over:
+            self.closed = True
+            self._tx_over.notify_all()
         self.sock.close()
 
 
 class SerialTransport:
     """A real BiM-433 module on a serial port (pyserial). The module's select
     lines are wired to RTS (TX select) and DTR (RX select) on a host adapter,
-    carrier detect to CD; without them the adapter must be hard-wired."""
+    carrier detect to CD. A port without modem lines (a pseudo-terminal, a
+    3-wire adapter with the module hard-wired) works too: then the selects are
+    not driven and the carrier reads as absent (modem_lines is False)."""
 
     def __init__(self, device, baud=19200):
         import serial                 # pyserial: only needed for real hardware
         self.port = serial.Serial(device, baud, timeout=0.1)
         self.baud = baud
+        self.modem_lines = True
 
     @property
     def carrier(self):
+        if not self.modem_lines:
+            return False
         try:
             return bool(self.port.cd)
         except OSError:
             return False
 
+    def _selects(self, rx, tx):
+        if not self.modem_lines:
+            return
+        try:
+            self.port.dtr, self.port.rts = rx, tx
+        except OSError:               # no modem control on this port (e.g. a pty)
+            self.modem_lines = False
+
     def hello(self, station):
-        self.port.dtr = True
-        self.port.rts = False
+        self._selects(True, False)
 
     def transmit(self, data):
-        self.port.dtr, self.port.rts = False, True
+        self._selects(False, True)
         self.port.write(data)
         self.port.flush()
-        self.port.dtr, self.port.rts = True, False
+        # flush() returns when the driver took the bytes; the last ones are
+        # still in the UART: wait their air time before un-keying.
+        time.sleep(len(data) * 10 / self.baud)
+        self._selects(True, False)
 
     def read(self, timeout):
-        self.port.timeout = timeout
-        return self.port.read(4096)
+        """Bytes heard within timeout (b'' when none); None when the port is gone."""
+        import serial
+        try:
+            self.port.timeout = timeout
+            return self.port.read(4096)
+        except (serial.SerialException, OSError):
+            return None
 
     def close(self):
         self.port.close()

@@ -208,7 +208,9 @@ def test_ps_lists_the_threads(shell):
     answer = shell.run("ps")
     assert answer[0].split()[:3] == ["thread", "prio", "state"]
     rows = {}
-    for line in answer[1:]:
+    irq = re.match(r"interrupt stack (\d+)/(\d+)$", answer[-1])
+    assert irq and 0 < int(irq.group(1)) < int(irq.group(2)), answer[-1]
+    for line in answer[1:-1]:
         m = re.match(r"(\S+)\s+(\d+) (\w+)\s+(\d+)/(\d+)\s+(\d+)$", line)
         assert m, line
         rows[m.group(1)] = m.groups()

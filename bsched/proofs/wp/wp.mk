@@ -12,10 +12,17 @@ WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
 # 2026-11-21, 1746 goals: Qed 1039, CVC4 380, CVC5 189, Z3 with bounded instantiation
 # 138; plain Z3 is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
 WP_PROVERS  ?= cvc4,z3-qi,cvc5
-# Timeouts are wall-clock, so they keep a wide margin over the slowest goal measured
-# (5.2 s, bsched_step ok_periodic): a loaded machine cannot flip the verdict. A prover
-# that gives up does so at once, so the margin costs nothing on proven goals.
-WP_TIMEOUT  ?= 30
+# Every prover call is limited by steps (-wp-steps: cvc4/cvc5 --rlimit, Z3 rlimit),
+# which do not depend on the machine's speed or load, so neither can turn a proven
+# goal into a failure. Each limit is 2x the most steps a proof by that prover took
+# (make wp-calibrate prints them; re-run it when the goals change): WP_STEPS for
+# cvc4 and cvc5, WP_STEPS_Z3 for Z3, whose units are ~13x cheaper (prover-steps.sh).
+# A goal cut by steps is reported as "Step limit" by all three (why3-config.sh). The
+# wall-clock timeout is only a backstop against a prover that hangs: Why3 kills a
+# step-limited call after 2 x WP_TIMEOUT + 1 s and reports Timeout from 0.9 x WP_TIMEOUT.
+WP_STEPS    ?= 830000
+export WP_STEPS_Z3 ?= 11000000
+WP_TIMEOUT  ?= 600
 # Prover jobs per Frama-C process: prover start-up, not CPU, bounds a run.
 WP_PAR      ?= 3
 # The full run has more goals than this; fewer means something was not analysed.
@@ -29,10 +36,12 @@ WP_EXPECT_FAIL ?=
 WP_KNOWN_GAPS ?=
 # Extra Frama-C options, e.g. -machdep x86_32 (make prove-machdeps, assure/assure.mk).
 WP_MACHDEP_FLAGS ?=
-export WHY3CONFIG := $(BSCHED_TOOLS)/why3/why3.conf
+# The directory name carries the configuration version (why3-config.sh).
+export WHY3CONFIG := $(BSCHED_TOOLS)/why3-v5/why3.conf
 
 WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
+	$(if $(filter-out 0,$(WP_STEPS)),-wp-steps $(WP_STEPS)) \
 	-wp-verbose 1 -wp-cache none $(WP_MACHDEP_FLAGS)
 
 # The full run is split in two Frama-C processes: WP generates its goals in one
@@ -46,7 +55,7 @@ WP_SEL_a     = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
 WP_SEL_b     = -wp-skip-fct $(WP_PART_A),bsched_run_cycle -wp-par $(WP_PAR)
 
 CHECKS += wp wp-negative
-.PHONY: prove check-wp check-wp-negative
+.PHONY: prove check-wp check-wp-negative wp-calibrate
 
 # Runs WP, then gates on the report: any goal not proven, fewer than
 # WP_MIN_GOALS goals, or an axiom in the spec fails the target.
@@ -68,6 +77,16 @@ prove:
 	    $(if $(WP_EXPECT_FAIL),--expect-fail $(WP_EXPECT_FAIL)) \
 	    $(if $(WP_KNOWN_GAPS),--known-gap $(WP_KNOWN_GAPS))
 
+# The full run with step limits far above any proof's (z3's rlimit is 32-bit), then
+# the steps each prover used and the limits they call for (wp_steps.py); fails when
+# WP_STEPS or WP_STEPS_Z3 no longer keeps its 2x margin. One run of make prove's length.
+WP_CALIBRATE_STEPS ?= 2000000000
+wp-calibrate:
+	@$(MAKE) --no-print-directory prove WP_STEPS=$(WP_CALIBRATE_STEPS) WP_STEPS_Z3=$(WP_CALIBRATE_STEPS) \
+	    WP_OUT=$(BUILD)/wp-calibrate; rc=$$?; \
+	python3 bsched/proofs/wp/wp_steps.py $(BUILD)/wp-calibrate/wp.log --margin 2 \
+	    --limit $(WP_STEPS) --limit-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT) || rc=1; exit $$rc
+
 check-wp:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_DIR)
@@ -87,11 +106,15 @@ WP_MUTANT_FCT := $(subst $(wp_space),,lemma_slots_disjoint,lemma_slots_mod_sum, 
     lemma_slots_due,lemma_slots_init_wait,lemma_slots_slot,lemma_slots_all,lemma_slots_step, \
     lemma_slots_class,lemma_slots_by_class,reverse_bits)
 WP_MUTANT_GOALS := typed_lemma_slots_init_wait_ensures_init_wait_def
+# The goal that must fail has no proof, so cvc4 would spend its whole step allowance or
+# the 600 s backstop on it (measured: over 6 min beside other jobs); a short backstop
+# suffices: the check asks only that make prove fail and that this goal be unproven.
+WP_NEGATIVE_TIMEOUT ?= 60
 check-wp-negative:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_DIR)
 	@$(MAKE) --no-print-directory prove WP_DEFINES=-DBSCHED_MUTANT_NO_REVERSE \
-	    WP_FCT=$(WP_MUTANT_FCT) WP_MIN_GOALS=150 WP_OUT=$(WP_DIR)/mutant \
+	    WP_FCT=$(WP_MUTANT_FCT) WP_MIN_GOALS=150 WP_OUT=$(WP_DIR)/mutant WP_TIMEOUT=$(WP_NEGATIVE_TIMEOUT) \
 	    > $(WP_DIR)/mutant.log 2>&1; rc=$$?; \
 	cat $(WP_DIR)/mutant.log; \
 	failed=$$(python3 -c 'import json,sys; r=json.load(open(sys.argv[1])); print(" ".join(g["goal"] for g in r["goals"] if g["status"]!="Valid"))' $(WP_DIR)/mutant/report.json 2>/dev/null); \

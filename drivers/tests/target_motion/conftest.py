@@ -7,16 +7,18 @@ Environment (set by `make check-motion-target`):
   MOTION_ELF   build/firmware/motiontest/motiontest.elf
   FW_ICOUNT    the -icount setting of `make run`
 """
-import json
 import os
 import re
 import select
-import socket
 import subprocess
+import sys
 import time
 from pathlib import Path
 
 import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "emu" / "tests"))
+from qtestlib import qmp_connect  # noqa: E402  (the shared QMP client, qemu.qmp)
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
 ELF = Path(os.environ.get("MOTION_ELF", Path(__file__).resolve().parents[3] / "build" / "firmware"
@@ -35,32 +37,11 @@ class MotionBoard:
              "-monitor", "none", "-serial", "stdio", "-qmp", f"unix:{qmp_path},server=on,wait=off"],
             stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.buf = b""
-        # The socket file can exist before QEMU listens on it: retry the connect.
-        deadline = time.monotonic() + 10
-        while True:
-            self.qmp = socket.socket(socket.AF_UNIX)
-            try:
-                self.qmp.connect(str(qmp_path))
-                break
-            except (FileNotFoundError, ConnectionRefusedError):
-                self.qmp.close()
-                assert time.monotonic() < deadline and self.proc.poll() is None, \
-                    "QMP socket did not open"
-                time.sleep(0.02)
-        self.qmp_file = self.qmp.makefile("rw")
-        json.loads(self.qmp_file.readline())
-        self._qmp("qmp_capabilities")
+        self.qmp = qmp_connect(qmp_path, self.proc)
         self.line(timeout=REPLY_TIMEOUT, pattern=rb"motiontest ready")
 
     def _qmp(self, name, **args):
-        self.qmp_file.write(json.dumps({"execute": name, "arguments": args}) + "\n")
-        self.qmp_file.flush()
-        while True:
-            reply = json.loads(self.qmp_file.readline())
-            if "return" in reply:
-                return reply["return"]
-            if "error" in reply:
-                raise RuntimeError(reply["error"])
+        return self.qmp.command(name, **args)
 
     def get(self, path, prop):
         return self._qmp("qom-get", path=IO + path, property=prop)

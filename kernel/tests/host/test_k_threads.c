@@ -6,6 +6,7 @@
  * interrupt at that point, and the idle thread ticks while timers pend.
  */
 #include <stdarg.h>
+#include <stdio.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
@@ -380,6 +381,33 @@ static void test_sem_timedwait_absolute(void **state)
     assert_int_equal(v, 1);
     assert_int_equal(k_sem_init(&sem, 2, 1), K_EINVAL);
     assert_int_equal(k_sem_post(NULL), K_EINVAL);
+}
+
+/* An absolute deadline read at tick 2 (1953125 ns, exact) with tick 3
+ * passing before the wait (2929687.5 ns, which the clock truncates): the
+ * wait must end at tick 2 + 1024, not one tick later (the difference of the
+ * two readings, 1 s - 976562 ns, is a hair over 1023 ticks). */
+static void *sem_timed_abs_after_a_tick(void *arg)
+{
+    struct k_timespec abs;
+    (void)arg;
+    k_sleep_ticks(2);                       /* tick 2 */
+    k_clock_gettime(K_CLOCK_MONOTONIC, &abs);
+    abs.tv_sec += 1;
+    host_tick();                            /* tick 3 before the wait */
+    rc[0] = k_sem_timedwait(&sem, &abs);
+    when[0] = k_ticks();
+    return NULL;
+}
+
+static void test_sem_timedwait_absolute_whole_ticks(void **state)
+{
+    (void)state;
+    k_sem_init(&sem, 0, 1);
+    spawn(0, "t", sem_timed_abs_after_a_tick, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_ETIMEDOUT);
+    assert_int_equal(when[0], 2u + K_TICK_HZ);
 }
 
 /* ---- interrupts ---- */
@@ -851,6 +879,85 @@ static void test_stack_guard(void **state)
     assert_int_equal(k_stats.stack_overflows, 1);
     assert_int_equal(rc[0], K_ESTACK);
     assert_non_null(strstr(host_console, "stack overflow in thread 'overflower'"));
+    {
+        struct k_thread_info info[3];
+        assert_int_equal(k_thread_list(info, 3), 3); /* survivor, overflower, idle */
+        assert_string_equal(info[1].name, "overflower");
+        assert_int_equal(info[1].stack_intact, 0);
+        assert_int_equal(info[0].stack_intact, 1);
+    }
+}
+
+/* A control block right below its thread's stack (as in struct k_bsched):
+ * an overflow two words past the guard words breaks its canary. The kernel
+ * must not go on with that block: it reports it and halts at the switch. */
+static struct {
+    struct k_thread t;
+    uint32_t stack[K_STACK_WORDS(16384u)];
+} victim;
+
+static void *overflows_into_its_tcb(void *arg)
+{
+    unsigned i;
+    (void)arg;
+    for (i = 0; i < K_STACK_GUARD_WORDS; i++)
+        victim.stack[i] = 0x0BADF00Du;
+    ((volatile uint32_t *)victim.stack)[-1] = 0x0BADF00Du; /* the canary */
+    mark('o');
+    (void)k_sched_yield();
+    mark('!'); /* never: the kernel halted */
+    return NULL;
+}
+
+static void *bystander(void *arg)
+{
+    (void)arg;
+    mark('b'); /* never: halted before it could run */
+    return NULL;
+}
+
+static void test_tcb_overwrite_halts(void **state)
+{
+    int halted = host_halted;
+    char expect[64];
+    (void)state;
+    assert_int_equal(k_thread_create(&victim.t, "victim", overflows_into_its_tcb, NULL,
+                                     victim.stack, sizeof victim.stack, 5), K_OK);
+    spawn(1, "bystander", bystander, NULL, 5);
+    k_start();
+    assert_int_equal(host_halted, halted + 1);
+    assert_string_equal(trace, "o");
+    snprintf(expect, sizeof expect, "control block of the thread at 0x%08lx overwritten",
+             (unsigned long)(uint32_t)(uintptr_t)&victim.t);
+    assert_non_null(strstr(host_console, expect));
+    assert_non_null(strstr(host_console, "halted"));
+}
+
+static int listed;
+static void *lists_threads(void *arg)
+{
+    struct k_thread_info info[4];
+    (void)arg;
+    listed = k_thread_list(info, 4);
+    mark('l'); /* never: the list runs through the broken block */
+    return NULL;
+}
+
+/* The same breakage found by k_thread_list (the shell's ps). */
+static void test_tcb_overwrite_found_by_thread_list(void **state)
+{
+    struct k_thread_info info[4];
+    int halted = host_halted;
+    (void)state;
+    assert_int_equal(k_thread_create(&victim.t, "victim", noop, NULL, victim.stack,
+                                     sizeof victim.stack, 5), K_OK);
+    assert_int_equal(k_thread_list(info, 4), 2);
+    victim.t.canary ^= 1u;
+    spawn(0, "lister", lists_threads, NULL, 6);
+    k_start();
+    assert_int_equal(host_halted, halted + 1);
+    assert_non_null(strstr(host_console, "overwritten"));
+    assert_string_equal(trace, "");
 }
 
 /* ---- introspection: k_thread_list ---- */
@@ -956,11 +1063,46 @@ static void test_bsched_thread_and_overrun(void **state)
     assert_int_equal(kb.overruns, 2);
     assert_true(kb.max_cycle_ticks >= 9u);
     assert_non_null(strstr(host_console, "bsched: overrun in minor cycle"));
-    /* announced at the successor's release, while the slow cycle still ran */
+    /* announced at the successor's release, while the slow cycle still ran,
+     * by the reporter: nothing is written from the tick */
     assert_int_equal(kb.stuck_reports, 1);
     assert_non_null(strstr(host_console, "still running at its successor's release"));
+    assert_int_equal(host_console_writes_in_isr, 0);
     assert_null(k_tick_hook); /* unhooked when the thread stopped */
     assert_int_equal(first_run_tick[0], 1);
+}
+
+/* Every cycle takes 2 ticks with a 1-tick period: continuous overrun. */
+static void slow_process(void *context, uint16_t index)
+{
+    (void)context;
+    runs_of[index]++;
+    host_tick();
+    host_tick();
+}
+
+static void test_bsched_reports_rate_limited(void **state)
+{
+    const uint8_t pv[] = {0};
+    uint32_t bursts;
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
+    kb.stop_after = 3000;
+    assert_int_equal(k_bsched_start(&kb, &bs, slow_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
+    k_start();
+    assert_int_equal(kb.cycles_run, 3000);
+    assert_int_equal(kb.overrun_events, 3000);   /* every cycle overran */
+    assert_int_equal(kb.stuck_reports, 3000);    /* and was noticed from the tick */
+    /* one burst (at most two lines) per interval, plus the final one */
+    bursts = k_ticks() / K_BSCHED_REPORT_INTERVAL_TICKS + 2u;
+    assert_true(k_ticks() >= 3u * 3000u);
+    assert_true(kb.report_lines >= 2u);
+    assert_true(kb.report_lines <= 2u * bursts);
+    /* the last line has the final totals: nothing was lost, only summed */
+    assert_non_null(strstr(host_console, "overruns in 3000 cycles so far"));
+    assert_int_equal(kb.reporter.base_prio, K_PRIO_APP_MAX - 1u); /* the loan ended */
+    assert_int_equal(host_console_writes_in_isr, 0);
 }
 
 static void quick_process(void *context, uint16_t index)
@@ -1005,6 +1147,7 @@ int main(void)
         T(test_sem_timeout),
         T(test_sem_handoff_order),
         T(test_sem_timedwait_absolute),
+        T(test_sem_timedwait_absolute_whole_ticks),
         T(test_irq_wakes_thread),
         T(test_mutex_owner_checks),
         T(test_priority_inheritance),
@@ -1015,9 +1158,12 @@ int main(void)
         T(test_events),
         T(test_join),
         T(test_stack_guard),
+        T(test_tcb_overwrite_halts),
+        T(test_tcb_overwrite_found_by_thread_list),
         T(test_thread_list),
         T(test_bsched_thread_and_overrun),
         T(test_bsched_thread_no_overrun_when_fast),
+        T(test_bsched_reports_rate_limited),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -7,11 +7,13 @@ Runs build/kernel/target/ktest-measure.elf under
 so QEMU logs one line per executed instruction (one instruction per
 translation block, no block chaining), then walks the PC sequence:
 
-  tick+switch: from the first instruction of the PIT vector (cpu32_vector_64)
-               taken while the low-priority spinner runs, to the label
-               ktest_after_sleep in the woken high-priority thread: PIT
-               handler, k_tick, timer expiry, k_isr_exit, the context switch
-               and the woken thread's return out of k_sleep_ticks.
+  tick+switch: from the first instruction of the kernel's interrupt entry
+               (k_isr_entry, where the PIT vector is routed) taken while the
+               low-priority spinner runs, to the label ktest_after_sleep in
+               the woken high-priority thread: the move to the interrupt
+               stack, PIT handler, k_tick, timer expiry, the scheduling
+               decision at the outermost exit, the context switch and the
+               woken thread's return out of k_sleep_ticks.
   sem hand-off: from ktest_before_post in the giver to ktest_after_wait in
                the taker: k_sem_post, waking, switch, return out of k_sem_wait.
 
@@ -118,8 +120,11 @@ def measure(qemu, elf):
     sym = symbols(elf)
     pcs, console = trace_pcs(qemu, elf)
     spin = sym["ktest_spin_loop"]
-    tick = spans(pcs, sym["cpu32_vector_64"], sym["ktest_after_sleep"],
-                 must_pass=sym["k_arch_switch"], stop_at=sym["cpu32_vector_64"],
+    # The PIT is routed through the kernel's entry (as every interrupt is):
+    # the span starts at k_isr_entry; ending in the woken sleeper after a
+    # switch means it was the tick (the only interrupt that wakes it).
+    tick = spans(pcs, sym["k_isr_entry"], sym["ktest_after_sleep"],
+                 must_pass=sym["k_arch_switch"], stop_at=sym["k_isr_entry"],
                  after_range=(spin - 64, spin + 64))
     handoff = spans(pcs, sym["ktest_before_post"], sym["ktest_after_wait"],
                     must_pass=sym["k_arch_switch"])

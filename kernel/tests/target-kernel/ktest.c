@@ -26,6 +26,9 @@
 #define KTEST_STACKGUARD 8
 #define KTEST_BADUSE     9
 #define KTEST_MEASURE   10
+#define KTEST_OVERLOAD  11
+#define KTEST_TCBGUARD  12
+#define KTEST_NESTING   13
 
 #define STACK_BYTES 2048u
 K_STACK_DEFINE(stack_main, STACK_BYTES);
@@ -37,7 +40,7 @@ __attribute__((unused)) static struct k_thread t_a, t_b, t_c;
 static struct k_thread t_main;
 static int failed;
 
-static void check(int ok, const char *what)
+__attribute__((unused)) static void check(int ok, const char *what)
 {
     if (!ok && !failed) {
         failed = 1;
@@ -45,7 +48,7 @@ static void check(int ok, const char *what)
     }
 }
 
-static void finish(void)
+__attribute__((unused)) static void finish(void)
 {
     if (!failed)
         k_printf("KTEST RESULT PASS\n");
@@ -382,8 +385,8 @@ static void *controller(void *arg)
     k_thread_join(&kb.thread, NULL, K_FOREVER);
     k_printf("KTEST cycles=%lu overruns=%lu overrun_events=%lu stuck_reports=%lu max_cycle_ticks=%lu runs0=%lu runs1=%lu\n",
              (unsigned long)kb.cycles_run, (unsigned long)kb.overruns,
-             (unsigned long)kb.stuck_reports,
-             (unsigned long)kb.overrun_events, (unsigned long)kb.max_cycle_ticks,
+             (unsigned long)kb.overrun_events, (unsigned long)kb.stuck_reports,
+             (unsigned long)kb.max_cycle_ticks,
              (unsigned long)runs[0], (unsigned long)runs[1]);
     check(kb.overrun_events == 1u, "exactly one cycle overran");
     check(kb.stuck_reports == 1u, "the late cycle was not announced at its successor's release");
@@ -570,6 +573,211 @@ static void *controller(void *arg)
     k_printf("KTEST measured switches=%lu\n", (unsigned long)k_stats.context_switches);
     /* 20 tick switches there and back, 20 hand-offs there and back */
     check(k_stats.context_switches >= 80u, "the scenarios did not switch as planned");
+    finish();
+    return NULL;
+}
+/* ------------------------------------------------------------------ */
+#elif KTEST_MODE == KTEST_OVERLOAD
+/* Continuous overrun: a B-scheduler cycle every tick whose process waits 2
+ * ticks (as if for I/O), so every cycle overruns while the CPU stays mostly
+ * free. A spinner at the lowest priority counts loops: it must keep nearly
+ * the share it had before the overload (the reporter, just below the
+ * B-scheduler thread, is rate-limited). Its stack holds nothing of the
+ * interrupt handlers (they run on the interrupt stack): its high-water mark
+ * stays near the entry frame and the switch frame. */
+#define OVERLOAD_WINDOW 1024u
+static struct bsched bs;
+static struct k_bsched kb;
+static volatile uint32_t spins;
+static volatile int stop_spinning;
+
+static void process(void *context, uint16_t index)
+{
+    (void)context;
+    (void)index;
+    k_sleep_ticks(2);
+}
+
+static void *spinner(void *arg)
+{
+    (void)arg;
+    while (!stop_spinning)
+        spins++;
+    return NULL;
+}
+
+static uint32_t spins_over(k_ticks_t ticks)
+{
+    uint32_t s0 = spins;
+    k_sleep_ticks(ticks);
+    return spins - s0;
+}
+
+static void *controller(void *arg)
+{
+    static const uint8_t pv[] = {0};
+    struct k_thread_info info[8];
+    uint32_t alone, loaded, events0, events, lines0, lines, irq_bytes = 0, irq_used = 0;
+    uint32_t spin_used = 0;
+    int i, n;
+    (void)arg;
+    k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
+    k_sleep_ticks(2);
+    alone = spins_over(OVERLOAD_WINDOW);
+    bsched_init(&bs, pv, 1);
+    k_bsched_start(&kb, &bs, process, NULL, 1, stack_b, STACK_BYTES);
+    k_sleep_ticks(16); /* into the steady overload */
+    events0 = kb.overrun_events;
+    lines0 = kb.report_lines;
+    loaded = spins_over(OVERLOAD_WINDOW);
+    events = kb.overrun_events - events0;
+    lines = kb.report_lines - lines0;
+    kb.stop = 1;
+    k_thread_join(&kb.thread, NULL, K_FOREVER);
+    stop_spinning = 1;
+    k_thread_join(&t_a, NULL, K_FOREVER);
+    n = k_thread_list(info, 8);
+    for (i = 0; i < n && i < 8; i++)
+        if (info[i].stack_base == stack_a)
+            spin_used = info[i].stack_used;
+    (void)k_irq_stack_usage(&irq_bytes, &irq_used);
+    k_printf("KTEST window=%lu spins_alone=%lu spins_overload=%lu share_permille=%lu "
+             "overrun_events=%lu report_lines=%lu interval=%lu spinner_stack_used=%lu "
+             "irq_stack_bytes=%lu irq_stack_used=%lu\n",
+             (unsigned long)OVERLOAD_WINDOW, (unsigned long)alone, (unsigned long)loaded,
+             (unsigned long)(loaded / 8u * 1000u / (alone / 8u ? alone / 8u : 1u)),
+             (unsigned long)events, (unsigned long)lines,
+             (unsigned long)K_BSCHED_REPORT_INTERVAL_TICKS, (unsigned long)spin_used,
+             (unsigned long)irq_bytes, (unsigned long)irq_used);
+    check(events >= OVERLOAD_WINDOW / 4u, "the overload did not overrun continuously");
+    check(lines <= OVERLOAD_WINDOW / K_BSCHED_REPORT_INTERVAL_TICKS * 2u + 2u,
+          "the reporter printed more than one burst per interval");
+    check(loaded / 8u * 10u >= alone / 8u * 8u,
+          "the lowest thread got less than 80 % of its share under overrun");
+    check(spin_used < 256u, "interrupt frames beyond the entry's landed on a thread stack");
+    check(irq_used > 0u && irq_used < irq_bytes, "interrupt stack unused or full");
+    finish();
+    return NULL;
+}
+
+/* ------------------------------------------------------------------ */
+#elif KTEST_MODE == KTEST_TCBGUARD
+/* A thread's control block right below its stack (as in struct k_bsched):
+ * the thread overflows its stack by two words, past the guard words into
+ * the control block's last word (its canary). At its next switch the kernel
+ * must notice, report the block and halt: nothing else may run after it. */
+static struct {
+    struct k_thread t;
+    uint32_t stack[K_STACK_WORDS(512u)];
+} victim __attribute__((aligned(4)));
+
+static void *overflower(void *arg)
+{
+    volatile uint32_t *below = victim.stack;
+    unsigned i;
+    (void)arg;
+    /* What a frame two words too deep writes: the guard words, then the
+     * two words under the stack. */
+    for (i = 0; i < K_STACK_GUARD_WORDS; i++)
+        below[i] = 0x0BADF00Du;
+    below[-1] = 0x0BADF00Du;
+    below[-2] = 0x0BADF00Du;
+    k_sleep_ticks(1);
+    k_printf("KTEST RESULT FAIL the overflowing thread ran on\n");
+    return NULL;
+}
+
+static void *controller(void *arg)
+{
+    (void)arg;
+    k_printf("KTEST victim=0x%lx\n", (unsigned long)(uintptr_t)&victim.t);
+    k_thread_create(&victim.t, "victim", overflower, NULL, victim.stack,
+                    sizeof victim.stack, 5);
+    k_sleep_ticks(50);
+    k_printf("KTEST RESULT FAIL the system went on after the overflow\n");
+    return NULL;
+}
+/* ------------------------------------------------------------------ */
+#elif KTEST_MODE == KTEST_NESTING
+/* Interrupt nesting on the interrupt stack. Inside the tick handler (level
+ * 4), with all levels masked, a line goes into the console ring, which
+ * enables the DUART's transmit interrupt (level 5): it is pending. The free
+ * part of the interrupt stack below the handler is refilled, then the mask
+ * goes back to level 4 and the DUART interrupt nests at once, on the
+ * interrupt stack below the tick handler: the high-water mark afterwards
+ * shows how deep it went. The thread that was interrupted must not see any
+ * of it on its own stack. */
+#define NEST_SLACK 64u  /* bytes below the handler's frame left for its own calls */
+static volatile uint32_t depth_here, used_before, used_after;
+static volatile int armed;
+static const char nest_line[] = "KTEST nesting: this line leaves from inside the tick interrupt\n";
+
+static void refill_below(uint32_t *base, const volatile uint8_t *frame)
+{
+    size_t i;
+    for (i = K_STACK_GUARD_WORDS; (uintptr_t)&base[i] + NEST_SLACK < (uintptr_t)frame; i++)
+        base[i] = K_STACK_GUARD;
+}
+
+static void tick_prints(void)
+{
+    size_t words;
+    uint32_t irq, size, used;
+    uint32_t *base = (uint32_t *)(uintptr_t)k_arch_irq_stack(&words);
+    volatile uint8_t here = 0;
+    if (!armed)
+        return;
+    armed = 0;
+    depth_here = (uint32_t)((uintptr_t)(base + words) - (uintptr_t)&here);
+    irq = k_arch_irq_save();
+    (void)k_console_write(nest_line, sizeof nest_line - 1u);
+    refill_below(base, &here);
+    (void)k_irq_stack_usage(&size, &used);
+    used_before = used;
+    k_arch_irq_restore(irq);      /* the DUART's level 5 nests here */
+    (void)k_irq_stack_usage(&size, &used);
+    used_after = used;
+}
+
+static volatile uint32_t spins;
+static volatile int stop_spinning;
+static void *spinner(void *arg)
+{
+    (void)arg;
+    while (!stop_spinning)
+        spins++;
+    return NULL;
+}
+
+static void *controller(void *arg)
+{
+    struct k_thread_info info[4];
+    uint32_t spin_used = 0, size = 0, used = 0;
+    int i, n;
+    (void)arg;
+    k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
+    k_sleep_ticks(20);                /* the console is idle again */
+    k_board_tick_callback = tick_prints;
+    armed = 1;
+    k_sleep_ticks(10);                /* the spinner runs when the tick comes */
+    k_board_tick_callback = NULL;
+    stop_spinning = 1;
+    k_thread_join(&t_a, NULL, K_FOREVER);
+    n = k_thread_list(info, 4);
+    for (i = 0; i < n && i < 4; i++)
+        if (info[i].stack_base == stack_a)
+            spin_used = info[i].stack_used;
+    (void)k_irq_stack_usage(&size, &used);
+    k_printf("KTEST tick_depth=%lu used_before=%lu used_after=%lu "
+             "spinner_stack_used=%lu irq_stack_bytes=%lu\n",
+             (unsigned long)depth_here, (unsigned long)used_before, (unsigned long)used_after,
+             (unsigned long)spin_used, (unsigned long)size);
+    check(armed == 0, "the tick callback never ran");
+    check(used_before <= depth_here + NEST_SLACK, "the refill below the tick handler did not take");
+    check(used_after >= depth_here + NEST_SLACK + 32u,
+          "no interrupt nested below the tick handler on the interrupt stack");
+    check(used_after < size, "the interrupt stack overflowed");
+    check(spin_used < 256u, "the nested interrupt landed on the thread's stack");
     finish();
     return NULL;
 }

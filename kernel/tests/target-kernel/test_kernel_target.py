@@ -26,15 +26,21 @@ ICOUNT = ["-icount", "shift=8,sleep=off"]
 TIME_LIMIT = 60.0  # wall seconds per image
 
 
-def boot(mode, extra=(), limit=TIME_LIMIT):
-    """Runs one image until it prints its result line; returns the console text."""
+def run_image(mode, limit, extra=()):
+    """Runs one image until it prints its result line or `limit` wall seconds
+    pass; returns (console text, qemu stderr)."""
     assert QEMU and os.access(QEMU, os.X_OK), f"BSCHED_QEMU not executable: {QEMU!r}"
     elf = IMAGES / f"ktest-{mode}.elf"
     assert elf.is_file(), f"missing {elf} (make kernel-target)"
     cmd = [QEMU, "-M", "robocube", "-kernel", str(elf), "-display", "none",
            "-monitor", "none", "-serial", "stdio", *ICOUNT, *extra]
     out, err = kmeasure.run_until_result(cmd, limit)
-    text = out.decode("latin-1").replace("\r\n", "\n")
+    return out.decode("latin-1").replace("\r\n", "\n"), err
+
+
+def boot(mode, extra=(), limit=TIME_LIMIT):
+    """Runs one image until it prints its result line; returns the console text."""
+    text, err = run_image(mode, limit, extra)
     assert "KTEST RESULT" in text, (
         f"{mode}: no result line within {limit} s; console:\n{text}\nqemu stderr:\n"
         f"{err.decode('latin-1')}")
@@ -131,6 +137,47 @@ def test_bsched_overrun_detected_and_reported():
     # announced while it still ran, at the release of cycle 9
     assert f["stuck_reports"] == 1
     assert re.search(r"bsched: minor cycle 8 still running at its successor's release", text)
+
+
+def test_lower_thread_progresses_under_continuous_overrun():
+    """Every B-scheduler cycle overruns (its process waits 2 ticks, period 1):
+    the reporter is rate-limited, so the lowest thread keeps most of its share;
+    and the interrupt handlers run on the interrupt stack, not on its stack."""
+    text = boot("overload")
+    f = facts(text)
+    passed(text)
+    assert f["overrun_events"] >= f["window"] // 4       # continuous overrun
+    assert f["report_lines"] <= 2 * (f["window"] // f["interval"] + 1)
+    assert f["share_permille"] >= 800, f                   # measured 898
+    assert len(re.findall(r"bsched: overrun in minor cycle", text)) <= 3
+    assert f["spinner_stack_used"] < 256                   # measured 116
+    assert 0 < f["irq_stack_used"] < f["irq_stack_bytes"]
+
+
+def test_interrupts_nest_on_the_interrupt_stack():
+    """The DUART's level 5 taken inside the tick handler (level 4): it runs on
+    the interrupt stack below the tick handler's frame, not on the interrupted
+    thread's stack, and the system goes on."""
+    text = boot("nesting")
+    f = facts(text)
+    passed(text)
+    assert "KTEST nesting: this line leaves from inside the tick interrupt" in text
+    assert f["used_before"] <= f["tick_depth"] + 64          # the refill below the handler
+    assert f["used_after"] >= f["tick_depth"] + 64 + 32, f   # measured 176 (tick frame 49)
+    assert f["used_after"] < f["irq_stack_bytes"]
+    assert f["spinner_stack_used"] < 256                     # measured 116
+
+
+def test_control_block_overwrite_detected_and_halts():
+    """A stack overflowing two words past its guard words into the control
+    block below it: found at the thread's next switch, reported, halted."""
+    text, err = run_image("tcbguard", limit=8.0)
+    victim = int(facts(text)["victim"], 16)
+    assert (f"kernel: control block of the thread at 0x{victim:08x} overwritten "
+            "(a stack overflowed into it): halted") in text, text
+    # the controller would print a FAIL line 50 ticks later if anything still ran
+    assert "KTEST RESULT" not in text, text
+    assert "EXCEPTION" not in text
 
 
 def test_stack_guard():

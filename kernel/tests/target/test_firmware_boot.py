@@ -8,25 +8,19 @@ Environment (set by `make check-firmware-boot`):
   CROSS_PREFIX  m68k-linux-gnu- (objdump, nm, readelf)
   FW_ICOUNT     the -icount setting `make run` uses
 """
-import json
-import ctypes
 import os
-import signal
 import re
 import select
-import socket
 import subprocess
+import sys
 import time
 from pathlib import Path
 
 import pytest
 
+sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "emu" / "tests"))
+from qtestlib import _die_with_parent, qmp_connect  # noqa: E402  (shared with the emulator tests)
 
-def _die_with_parent():
-    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
-    so a killed or crashed test run never leaves an emulator spinning (under
-    -icount sleep=off an idle guest keeps a host core busy)."""
-    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
@@ -70,24 +64,10 @@ class Board:
         self.output = b""
         self.qmp = None
         if qmp_path:
-            deadline = time.monotonic() + 10
-            while not os.path.exists(qmp_path):
-                assert time.monotonic() < deadline, "QMP socket did not appear"
-                time.sleep(0.05)
-            self.qmp = socket.socket(socket.AF_UNIX)
-            self.qmp.connect(str(qmp_path))
-            self.qmp_file = self.qmp.makefile("rw")
-            json.loads(self.qmp_file.readline())        # greeting
-            self.qmp_command("qmp_capabilities")
+            self.qmp = qmp_connect(qmp_path, self.proc)
 
     def qmp_command(self, name, **args):
-        self.qmp_file.write(json.dumps({"execute": name, "arguments": args}) + "\n")
-        self.qmp_file.flush()
-        while True:
-            reply = json.loads(self.qmp_file.readline())
-            if "return" in reply:
-                return reply["return"]
-            assert "error" not in reply, reply
+        return self.qmp.command(name, **args)
 
     def read_until(self, pattern, timeout):
         """Reads the console until `pattern` (regex, bytes) matches; returns the match."""

@@ -26,8 +26,10 @@ class Air:
         self.medium = MediumProcess(self.sock, **faults)
         return self.medium
 
-    def board(self, station, **config):
-        b = Board(self.elf, station, self.sock, self.dir, **config)
+    def board(self, station, medium_sock="medium", **config):
+        """A board on this test's medium, or (medium_sock=None) on a pty."""
+        b = Board(self.elf, station, self.sock if medium_sock == "medium" else medium_sock,
+                  self.dir, **config)
         self.boards.append(b)
         return b
 
@@ -42,7 +44,7 @@ class Air:
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "interop: a host peer speaks first to a fresh board "
-                            "(known flaky, make net-interop)")
+                            "(make net-interop repeats these)")
 
 
 @pytest.fixture

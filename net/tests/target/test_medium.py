@@ -139,3 +139,64 @@ def test_out_of_range_and_leaving_station(medium_factory):
     c.send(b"ok")
     assert b.drain()[0] == b"ok"
     assert m.control("bogus") .startswith("error")
+
+
+def read_msgs(sock, until_kind, timeout=5.0):
+    """2-byte messages from sock up to and including the first of until_kind."""
+    sock.settimeout(timeout)
+    out, buf = [], b""
+    while True:
+        chunk = sock.recv(2 - len(buf))
+        assert chunk, "medium closed the connection"
+        buf += chunk
+        if len(buf) == 2:
+            out.append((buf[0], buf[1]))
+            buf = b""
+            if out[-1][0] == until_kind:
+                return out
+
+
+def test_host_peer_is_paced_in_the_boards_virtual_time(medium_factory):
+    """A paced station's transmission lasts its air time in lock-step rounds
+    (the fix of net/README.md "Fixed bugs"), not in wall time."""
+    m = medium_factory()
+    board, peer = Station(m.sock, 1), Station(m.sock, 9)
+    board.selects(1)
+    peer.s.sendall(bytes((4, 19200 // 300)))     # pace me at 19200 baud
+    board.s.sendall(bytes((3, 0)))               # the board joins the lock step
+    read_msgs(board.s, 3)
+    frame = bytes(range(20))                     # 20 x 0.52 ms = 10.4 ms = 21 rounds
+    peer.selects(2)
+    peer.send(frame)
+    peer.selects(1)
+    time.sleep(0.3)                              # all of it queued at the medium
+    heard, heard_at, carrier_rounds = bytearray(), [], set()
+    carrier = 0
+    for rnd in range(1, 41):
+        board.s.sendall(bytes((3, 0)))
+        for kind, value in read_msgs(board.s, 3):
+            if kind == 0:
+                heard.append(value)
+                heard_at.append(rnd)
+            elif kind == 1:
+                carrier = value
+        if carrier:
+            carrier_rounds.add(rnd)
+    assert bytes(heard) == frame
+    # character k reaches the air (k + 1) character times after the start
+    assert heard_at == [-(-(k + 1) * 520833 // 500000) for k in range(20)], heard_at
+    assert 20 <= len(carrier_rounds) <= 22, sorted(carrier_rounds)
+    assert read_msgs(peer.s, 4)[-1] == (4, 1)    # "over, paced"
+
+
+def test_host_peer_alone_is_not_paced(medium_factory):
+    m = medium_factory()
+    listener, peer = Station(m.sock, 1), Station(m.sock, 9)
+    listener.selects(1)
+    peer.s.sendall(bytes((4, 19200 // 300)))
+    time.sleep(0.1)
+    peer.selects(2)
+    peer.send(b"at once")
+    peer.selects(1)
+    assert listener.drain()[0] == b"at once"
+    assert read_msgs(peer.s, 4)[-1] == (4, 0)    # "over, not paced": pace yourself

@@ -23,6 +23,12 @@
 #endif
 
 static int irq_disabled;
+
+static void host_unpoison_stacks(void)
+{
+    for (struct k_thread *t = k_kernel.all; t != NULL; t = t->all_next)
+        HOST_UNPOISON(t->stack_base, t->stack_words * sizeof(uint32_t));
+}
 static ucontext_t *boot_uc;
 char host_console[HOST_CONSOLE_SIZE];
 size_t host_console_len;
@@ -90,11 +96,31 @@ void k_arch_idle(void)
     }
     /* Nothing will ever be ready again: back to k_start's caller. */
     (void)k_arch_irq_save();
-    for (struct k_thread *t = k_kernel.all; t != NULL; t = t->all_next)
-        HOST_UNPOISON(t->stack_base, t->stack_words * sizeof(uint32_t));
+    host_unpoison_stacks();
     k_kernel.current = &k_kernel.boot;
     if (swapcontext(&k_kernel.idle.ctx.uc, boot_uc) != 0)
         abort();
+}
+
+const uint32_t *k_arch_irq_stack(size_t *words)
+{
+    *words = 0;
+    return NULL; /* handlers run on the interrupted thread's stack */
+}
+
+/* The kernel stopped the system (a fatal report): the test gets control
+ * back as if k_start had returned, and host_halted says why. */
+int host_halted;
+void k_arch_halt(void)
+{
+    (void)k_arch_irq_save();
+    host_halted++;
+    host_unpoison_stacks();
+    k_kernel.current = &k_kernel.boot;
+    k_kernel.started = 0;
+    if (boot_uc != NULL)
+        (void)setcontext(boot_uc);
+    abort();
 }
 
 int k_arch_irq_route(unsigned vector)
@@ -103,14 +129,26 @@ int k_arch_irq_route(unsigned vector)
     return K_OK;
 }
 
+/* The host port has no interrupt stack: the handler runs where it was called. */
+void k_isr_call(void (*fn)(void *arg), void *arg)
+{
+    k_isr_enter();
+    fn(arg);
+    k_isr_exit();
+}
+
 void host_raise_irq(unsigned vector)
 {
     k_isr_run(vector);
 }
 
+size_t host_console_writes_in_isr;
+
 size_t k_console_write(const char *s, size_t len)
 {
     size_t room = HOST_CONSOLE_SIZE - 1u - host_console_len;
+    if (k_in_isr())
+        host_console_writes_in_isr++;
     if (len > room)
         len = room;
     memcpy(host_console + host_console_len, s, len);
@@ -126,6 +164,7 @@ void k_console_write_sync(const char *s, size_t len)
 
 void host_console_clear(void)
 {
+    host_console_writes_in_isr = 0;
     host_console_len = 0;
     host_console[0] = '\0';
 }

@@ -1,0 +1,35 @@
+/*
+ * The start-up every firmware image shares. An image's main is
+ *
+ *     board_start("NAME");               kernel, LED, console, tick
+ *     ...app-specific set-up...
+ *     board_spawn(&t, "name", fn, arg, stack, sizeof stack, prio);
+ *     k_start();
+ *
+ * so the boot sequence and its failure handling live here once.
+ */
+#ifndef DRIVERS_BOARD_H
+#define DRIVERS_BOARD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel.h"
+
+/* Resets the kernel (k_init), switches the status LED off and brings up the
+ * kernel's board support (interrupt-driven console on DUART B, the PIT tick
+ * at K_TICK_HZ). An image cannot run without its tick, so on failure it
+ * writes "IMAGE: board start failed: ..." on the polled console and halts. */
+void board_start(const char *image);
+
+/* Writes "IMAGE: WHY" (WHY ends with its own newline) on the polled console,
+ * so it gets out even before k_start, and halts the CPU. */
+void board_halt(const char *image, const char *why) __attribute__((noreturn));
+
+/* k_thread_create that says so on the console when the thread cannot be
+ * created ("cannot create thread 'NAME': error E"); the image then runs
+ * without it. Returns k_thread_create's result. */
+int board_spawn(struct k_thread *t, const char *name, k_thread_fn entry, void *arg,
+                uint32_t *stack, size_t stack_bytes, unsigned prio);
+
+#endif /* DRIVERS_BOARD_H */
