@@ -525,7 +525,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     requires separated: \separated(out + (0 .. s->perfect - 1), &s->count, &s->maxpv, &s->minpv,
         &s->perfect, &s->pv[0 .. BSCHED_MAX_PROCS - 1], &s->offset[0 .. BSCHED_MAX_PROCS - 1],
         &s->order[0 .. BSCHED_MAX_PROCS - 1], &s->class_first[0 .. BSCHED_MAX_PV],
-        &s->class_size[0 .. BSCHED_MAX_PV], &s->class_lead[0 .. BSCHED_MAX_PV]);
+        &s->class_size[0 .. BSCHED_MAX_PV], &s->class_lead[0 .. BSCHED_MAX_PV],
+        &s->cycle, &s->reversed);
     requires counter: reversed == rev(s->maxpv, t);
     assigns out[0 .. s->perfect - 1];
     ensures load: \result == load(&s->pv[0], \old(s->count), t) == \old(due_slots(s, t, s->count));
@@ -591,6 +592,11 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ assert class_range: class_first(&s->pv[0], n, k + 1) == s->class_first[k] + size <= n &&
                 s->class_first[k] == class_first(&s->pv[0], n, k) &&
                 size == class_count(&s->pv[0], n, k); */
+        /*@ assert class_hits_instance: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
+                due_slots{Pre}(s, t, class_first(&s->pv[0], n, k)) +
+                (class_area(&s->pv[0], n, k) + class_count(&s->pv[0], n, k) -
+                 rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
+                (class_area(&s->pv[0], n, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k); */
         /*@ assert class_hits: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
                 done0 + ((area + size - y + period - 1) / period - (area - y + period - 1) / period); */
         /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= \at(s->perfect, Pre); */
@@ -622,7 +628,16 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
                 /*@ assert slot_ok: slots_slot_ok{Pre}(s, t, slot); */
                 /*@ assert slot_due: s->order[slot] < n && s->pv[s->order[slot]] == k &&
                         t % pow2(s->pv[s->order[slot]]) == s->offset[s->order[slot]]; */
+                /*@ assert in_room: done < \at(s->perfect, Pre) && slot < BSCHED_MAX_PROCS; */
+                /*@ ghost Emit: ; */
                 out[done] = s->order[slot];
+                /*@ assert wrote: out[done] == \at(s->order[slot], Emit) &&
+                        (\forall integer x; 0 <= x < \at(s->perfect, Pre) && x != done ==>
+                            out[x] == \at(out[x], Emit)) &&
+                        (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Emit)); */
+                /*@ assert listed_new: out[done] < n && t % pow2(s->pv[out[done]]) == s->offset[out[done]]; */
+                /*@ assert listed_old: \forall integer x; 0 <= x < done ==>
+                        out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
                 done++;
                 slot += period;
                 /*@ ghost i = i + 1; */
@@ -668,6 +683,55 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
     return (uint32_t)done;
 }
 
+/* rev(maxpv, t + 1 mod 2^maxpv) from reversed = rev(maxpv, t): add 1 at the
+ * top bit of the reversed counter and carry downwards, as t + 1 carries upwards
+ * (at most maxpv carries, one on average; bit is 0 after the last carry only
+ * when t + 1 wraps to 0). */
+/*@ requires maxpv <= BSCHED_MAX_PV && t < pow2(maxpv);
+    requires counter: reversed == rev(maxpv, t);
+    assigns \nothing;
+    ensures next: \result == rev(maxpv, (t + 1) % pow2(maxpv));
+*/
+static uint32_t next_reversed(uint32_t reversed, uint32_t maxpv)
+    /*@ ghost (uint32_t t) */
+{
+    uint32_t bit = period_of(maxpv) / 2u;
+    /*@ ghost
+      int e = (int)maxpv;
+      uint64_t u = t;
+      lemma_rev_range();
+      lemma_rev_zero();
+      lemma_pow2(BSCHED_MAX_PV);
+    */
+    /*@ loop invariant e_range: 0 <= e <= maxpv;
+        loop invariant bit_is: (e >= 1 ==> bit == pow2(e - 1)) && (e == 0 ==> bit == 0);
+        loop invariant low: reversed == rev(e, u) && 0 <= u;
+        loop invariant goal: rev(maxpv, t + 1) == rev(e, u + 1);
+        loop assigns reversed, bit, e, u;
+        loop variant bit;
+    */
+    while (bit != 0u && reversed >= bit) {
+        /*@ ghost lemma_rev_carry(e, u); */
+        /*@ assert odd: u % 2 == 1 && bit == pow2(e - 1); */
+        /*@ assert next_goal: rev(e, u + 1) == rev(e - 1, u / 2 + 1); */
+        reversed -= bit;
+        bit /= 2u;
+        /*@ ghost
+          u = u / 2;
+          e = e - 1;
+        */
+    }
+    /*@ ghost
+      if (e >= 1) {
+        lemma_rev_carry(e, u);
+      }
+    */
+    /*@ assert next_reversed: reversed + bit == rev(maxpv, t + 1); */
+    /*@ ghost rev_mod_inv(); */
+    /*@ assert next_mod: rev(maxpv, t + 1) == rev(maxpv, (t + 1) % pow2(maxpv)); */
+    return reversed + bit;
+}
+
 /*@ requires valid_state: s == \null || \valid(s);
     requires from_init: s != \null && plausible(s) ==> scheduled(s);
     assigns s->ran[0 .. BSCHED_MAX_PROCS - 1], s->ran_count, s->cycle, s->reversed;
@@ -703,7 +767,6 @@ int32_t bsched_step(struct bsched *s)
 {
     uint32_t done;
     uint32_t reversed;
-    uint32_t bit;
 
     if (s == NULL) {
         return BSCHED_ERR_NULL;
@@ -713,65 +776,28 @@ int32_t bsched_step(struct bsched *s)
     }
     reversed = s->reversed;
     /*@ ghost uint32_t t = s->cycle; */
+    /* The counters first: collect_due reads neither, and ran[] is then the
+     * last thing written but ran_count. */
+    s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
+    s->reversed = next_reversed(reversed, s->maxpv) /*@ ghost (t) */;
+    /*@ assert counters: s->cycle == (t + 1) % pow2(s->maxpv) &&
+            s->reversed == rev(s->maxpv, s->cycle) && s->cycle < pow2(s->maxpv); */
     done = collect_due(s, reversed, s->ran) /*@ ghost (t) */;
     /*@ assert ran_listed: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
     /*@ assert ran_exact: \forall integer i; 0 <= i < s->count ==>
             ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ ghost lemma_balance(s->pv, s->count, t); */
+    /*@ ghost Collected: ; */
     s->ran_count = (uint16_t)done;
-    /*@ assert ran_listed_1: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
-    s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
-    /* rev(t + 1) from rev(t): add 1 at the top bit of the reversed counter and
-     * carry downwards (bit is 0 after the last carry only when t + 1 wraps). */
-    bit = period_of(s->maxpv) / 2u;
-    /*@ ghost
-      int e = s->maxpv;
-      uint64_t u = t;
-      lemma_rev_range();
-      lemma_rev_zero();
-      lemma_pow2(BSCHED_MAX_PV);
-    */
-    /*@ loop invariant e_range: 0 <= e <= s->maxpv;
-        loop invariant bit_is: (e >= 1 ==> bit == pow2(e - 1)) && (e == 0 ==> bit == 0);
-        loop invariant low: reversed == rev(e, u) && 0 <= u;
-        loop invariant goal: rev(s->maxpv, t + 1) == rev(e, u + 1);
-        loop assigns reversed, bit, e, u;
-        loop variant bit;
-    */
-    while (bit != 0u && reversed >= bit) { /* at most maxpv carries */
-        /*@ ghost lemma_rev_carry(e, u); */
-        /*@ assert odd: u % 2 == 1 && bit == pow2(e - 1); */
-        /*@ assert next_goal: rev(e, u + 1) == rev(e - 1, u / 2 + 1); */
-        reversed -= bit;
-        bit /= 2u;
-        /*@ ghost
-          u = u / 2;
-          e = e - 1;
-        */
-    }
-    /*@ ghost
-      if (e >= 1) {
-        lemma_rev_carry(e, u);
-      }
-    */
-    /*@ assert next_reversed: reversed + bit == rev(s->maxpv, t + 1); */
-    /*@ ghost rev_mod_inv(); */
-    /*@ assert next_mod: rev(s->maxpv, t + 1) == rev(s->maxpv, (t + 1) % pow2(s->maxpv)); */
-    s->reversed = reversed + bit;
-    /*@ assert order_same: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==>
-            s->order[d] == \at(s->order[d], Pre); */
-    /*@ assert table_same: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
-            s->class_first[k] == \at(s->class_first[k], Pre) &&
-            s->class_size[k] == \at(s->class_size[k], Pre); */
+    /*@ assert ran_kept: s->count == \at(s->count, Collected) && s->ran_count == done &&
+            \forall integer j; 0 <= j < BSCHED_MAX_PROCS ==> s->ran[j] == \at(s->ran[j], Collected); */
+    /*@ assert ran_exact_kept: \forall integer i; 0 <= i < s->count ==>
+            ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ assert sizes_same: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre); */
-    /*@ assert cycle_range: s->cycle < pow2(s->maxpv); */
     /*@ assert wf_kept: well_formed(s); */
     /*@ assert sorted_same: sorted_order(s); */
     /*@ assert table_kept: class_table(s); */
     /*@ ghost lemma_scheduled(s); */
-    /*@ assert ran_listed_2: \forall integer j; 0 <= j < done ==> 0 <= s->ran[j] < s->count; */
-    /*@ assert ran_exact_2: \forall integer i; 0 <= i < s->count ==>
-            ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ assert periodic: s->ran_count == done && \forall integer i; 0 <= i < s->count ==>
             (ran_last(s, i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     return (int32_t)done;
