@@ -568,7 +568,8 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
     */
     for (k = s->minpv; k <= maxpv; k++) {
         uint32_t period = period_of(k);
-        uint32_t top = reversed / period_of(maxpv - k);
+        uint32_t top_period = period_of(maxpv - k);
+        uint32_t top = reversed / top_period;
         size_t slot = (top + s->class_lead[k]) % period;
         size_t size = s->class_size[k];
         /*@ ghost
@@ -581,9 +582,13 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         */
         /*@ assert period_is: period == pow2(k) && 1 <= period <= 2147483648; */
         /*@ assert shift_ok: 0 <= maxpv - k <= BSCHED_MAX_PV && (uint32_t)(maxpv - k) == maxpv - k; */
+        /*@ assert top_instance: top_at(reversed, maxpv, t, k) && start_area_at{Pre}(s, k); */
+        /*@ assert top_period_is: top_period == pow2(maxpv - k) && top_period >= 1; */
         /*@ assert top_is: top == reversed / pow2(maxpv - k); */
         /*@ assert y_is: y == rev(k, t % pow2(k)) && 0 <= y < period; */
         /*@ assert lead_table: s->class_lead[k] == pow2(k) - class_start(&s->pv[0], n, k); */
+        /*@ assert area_is: area == class_area(&s->pv[0], n, k); */
+        /*@ assert start_is: class_start(&s->pv[0], n, k) == class_area(&s->pv[0], n, k) % pow2(k); */
         /*@ assert start_area: class_start(&s->pv[0], n, k) == class_area(&s->pv[0], n, k) % pow2(k) &&
                 area == class_area(&s->pv[0], n, k); */
         /*@ assert lead_is: s->class_lead[k] == period - area % period; */
@@ -592,7 +597,8 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ assert class_range: class_first(&s->pv[0], n, k + 1) == s->class_first[k] + size <= n &&
                 s->class_first[k] == class_first(&s->pv[0], n, k) &&
                 size == class_count(&s->pv[0], n, k); */
-        /*@ assert class_hits_instance: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
+        /*@ assert class_hits_instance: class_hits_at{Pre}(s, t, k); */
+        /*@ assert class_hits_unfolded: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
                 due_slots{Pre}(s, t, class_first(&s->pv[0], n, k)) +
                 (class_area(&s->pv[0], n, k) + class_count(&s->pv[0], n, k) -
                  rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
@@ -603,6 +609,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
 
         if (slot < size) {
             size_t end = s->class_first[k] + size;
+            /*@ ghost int64_t first = s->class_first[k]; */
             slot += s->class_first[k];
             /*@ loop invariant walk: slot == s->class_first[k] + (j0 + i * period) && 0 <= i;
                 loop invariant walk_lt: slot < end;
@@ -614,10 +621,10 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
                     (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
                         s->class_first[j] == \at(s->class_first[j], Pre) &&
                         s->class_size[j] == \at(s->class_size[j], Pre));
+                loop invariant first_is: first == s->class_first[k] && end == first + size;
                 loop invariant walk_listed: \forall integer m; 0 <= m < i ==>
-                    out[done0 + m] == s->order[s->class_first[k] + (j0 + m * period)];
-                loop invariant listed_due: \forall integer x; 0 <= x < done ==>
-                    out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+                    emitted_at(s, out, done0, first, j0, period, m);
+                loop invariant listed_due: \forall integer x; 0 <= x < done ==> listed_at(s, out, x, n, t);
                 loop invariant before: \forall integer x; 0 <= x < done0 ==> out[x] == \at(out[x], LoopEntry);
                 loop assigns slot, done, i, out[0 .. \at(s->perfect, Pre) - 1];
                 loop variant end - slot;
@@ -635,13 +642,18 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
                         (\forall integer x; 0 <= x < \at(s->perfect, Pre) && x != done ==>
                             out[x] == \at(out[x], Emit)) &&
                         (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Emit)); */
-                /*@ assert listed_new: out[done] < n && t % pow2(s->pv[out[done]]) == s->offset[out[done]]; */
-                /*@ assert listed_old: \forall integer x; 0 <= x < done ==>
-                        out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
+                /*@ assert listed_new: listed_at(s, out, done, n, t); */
+                /*@ assert listed_old: \forall integer x; 0 <= x < done ==> listed_at(s, out, x, n, t); */
+                /*@ assert walk_new: emitted_at(s, out, done0, first, j0, period, i); */
+                /*@ assert walk_old: \forall integer m; 0 <= m < i ==> emitted_at(s, out, done0, first, j0, period, m); */
                 done++;
                 slot += period;
                 /*@ ghost i = i + 1; */
             } while (slot < end); /* at most class_size[k] runs */
+            /*@ assert walk_all: \forall integer m; 0 <= m < i ==>
+                    out[done0 + m] == s->order[s->class_first[k] + (j0 + m * period)]; */
+            /*@ assert listed_all: \forall integer x; 0 <= x < done ==>
+                    out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
         }
         /*@ ghost step_class_count(period, area, y, q, j0, i, size); */
         /*@ ghost step_member_index(period, area, y, q, j0, i, size); */

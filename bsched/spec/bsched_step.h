@@ -362,6 +362,55 @@
   }
 */
 
+/* Named facts of collect_due. Each is a predicate so that a quantified
+ * hypothesis over it has the predicate itself as its only trigger: the
+ * instance a goal needs is then found at once, where the unfolded formula
+ * (divisions, rev, pow2 over memory) let the provers wander in the large
+ * context of collect_due's loops. */
+/*@
+  // Class k's due members: the class adds its hits to the due slots below it.
+  predicate class_hits_at{L}(struct bsched *s, integer t, integer k) =
+      due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+      due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
+      (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
+       rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
+      (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k);
+
+  // The reversed counter's top k bits are rev_k(t mod 2^k).
+  predicate top_at(integer reversed, integer maxpv, integer t, integer k) =
+      reversed / pow2(maxpv - k) == rev(k, t % pow2(k)) && 0 <= rev(k, t % pow2(k)) < pow2(k);
+
+  // Fig. 6's start value of class k is its area mod 2^k.
+  predicate start_area_at{L}(struct bsched *s, integer k) =
+      class_start(&s->pv[0], s->count, k) == class_area(&s->pv[0], s->count, k) % pow2(k);
+
+  // out[x] is a process due in cycle t.
+  predicate listed_at{L}(struct bsched *s, uint16_t *out, integer x, integer n, integer t) =
+      out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+
+  // The m-th member emitted for a class (first slot first, residue j0, step p).
+  predicate emitted_at{L}(struct bsched *s, uint16_t *out, integer done0, integer first,
+                          integer j0, integer p, integer m) =
+      out[done0 + m] == s->order[first + (j0 + m * p)];
+*/
+
+/* The per-class fact in its named form (class_hits_at), proven apart from
+ * step_collect_facts' many lemmas, where the unfolding alone timed out. */
+/*@ ghost
+  /@ requires classes: \forall integer k; s->minpv <= k <= s->maxpv ==>
+         due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+         due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
+         (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
+          rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
+         (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k);
+     assigns \nothing;
+     ensures classes_at: \forall integer k; s->minpv <= k <= s->maxpv ==> class_hits_at(s, t, k);
+  @/
+  void step_classes_at(struct bsched *s, uint32_t t)
+  {
+  }
+*/
+
 /* Everything collect_due needs about the state and cycle t, in one contract,
  * so that its own goals see these facts and not the lemmas behind them. */
 /*@ ghost
@@ -392,6 +441,9 @@
          (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
           rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
          (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k);
+     ensures classes_at: \forall integer k; s->minpv <= k <= s->maxpv ==> class_hits_at(s, t, k);
+     ensures start_area_all: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==> start_area_at(s, k);
+     ensures top_all: \forall integer k; s->minpv <= k <= s->maxpv ==> top_at(reversed, s->maxpv, t, k);
      ensures start_is_area: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
          class_start(&s->pv[0], s->count, k) == class_area(&s->pv[0], s->count, k) % pow2(k);
      ensures top: \forall integer k; s->minpv <= k <= s->maxpv ==>
@@ -422,6 +474,13 @@
            hits(k, class_area(&s->pv[0], s->count, k), class_count(&s->pv[0], s->count, k), rev(k, t % pow2(k))) ==
            below(k, rev(k, t % pow2(k)), class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k)) -
            below(k, rev(k, t % pow2(k)), class_area(&s->pv[0], s->count, k)); @/
+    /@ assert classes: \forall integer k; s->minpv <= k <= s->maxpv ==>
+         due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+         due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
+         (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
+          rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
+         (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k); @/
+    step_classes_at(s, t);
   }
 */
 
