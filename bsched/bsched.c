@@ -509,6 +509,53 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     return BSCHED_OK;
 }
 
+/* Appends the class members j0, j0 + p, j0 + 2p, ... below size of the class
+ * whose first slot is `first` (order[first + j]) to out[] from index done on;
+ * returns the new count. A function of its own so that WP proves the walk in
+ * a small context (inside collect_due, every goal of the loop carried all of
+ * collect_due's facts and timed out). */
+/*@ requires p_range: 1 <= p <= 2147483648;
+    requires walk_range: j0 < size && first + size <= BSCHED_MAX_PROCS && done <= 65535;
+    requires \valid_read(order + (0 .. BSCHED_MAX_PROCS - 1));
+    requires room: \valid(out + (done .. done + (size - 1 - j0) / p));
+    requires \separated(out + (done .. done + (size - 1 - j0) / p), order + (0 .. BSCHED_MAX_PROCS - 1));
+    assigns out[done .. done + (size - 1 - j0) / p];
+    ensures count: \result == done + (size - 1 - j0) / p + 1;
+    ensures emitted_at: \forall integer x; done <= x < \result ==>
+        out[x] == order[first + (j0 + (x - done) * p)];
+*/
+static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
+                           size_t first, size_t j0, size_t size, size_t p)
+{
+    size_t slot = first + j0;
+    size_t end = first + size;
+    /*@ ghost
+      int64_t cnt = ((int64_t)size - 1 - (int64_t)j0) / (int64_t)p + 1;
+      int64_t m = 0;
+      step_count_members((int64_t)p, (int64_t)j0, (int64_t)size, cnt);
+    */
+    /*@ loop invariant walk: 0 <= m < cnt && slot == first + (j0 + m * p) && slot < end;
+        loop invariant counted: done == \at(done, Pre) + m;
+        loop invariant emitted: \forall integer x; \at(done, Pre) <= x < done ==>
+            out[x] == order[first + (j0 + (x - \at(done, Pre)) * p)];
+        loop assigns slot, done, m, out[\at(done, Pre) .. \at(done, Pre) + (size - 1 - j0) / p];
+        loop variant end - slot;
+    */
+    do {
+        /*@ assert in_room: done <= \at(done, Pre) + (size - 1 - j0) / p; */
+        out[done] = order[slot];
+        /*@ assert wrote_new: out[done] == order[first + (j0 + (done - \at(done, Pre)) * p)]; */
+        /*@ assert wrote_old: \forall integer x; \at(done, Pre) <= x < done ==>
+                out[x] == order[first + (j0 + (x - \at(done, Pre)) * p)]; */
+        done++;
+        slot += p;
+        /*@ ghost m = m + 1; */
+        /*@ assert next_slot: slot == first + (j0 + m * p); */
+    } while (slot < end);
+    /*@ assert all: m == cnt; */
+    return done;
+}
+
 /* The processes due in minor cycle t, in execution order, into out[], from
  * reversed = rev_maxpv(t): class by class upwards, member j of class k is due
  * iff j == j0 (mod 2^k), j0 = (rev_k(t mod 2^k) + lead_k) mod 2^k, and
@@ -608,52 +655,28 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= \at(s->perfect, Pre); */
 
         if (slot < size) {
-            size_t end = s->class_first[k] + size;
-            /*@ ghost int64_t first = s->class_first[k]; */
-            slot += s->class_first[k];
-            /*@ loop invariant walk: slot == s->class_first[k] + (j0 + i * period) && 0 <= i;
-                loop invariant walk_lt: slot < end;
-                loop invariant done_walk: done == done0 + i;
-                loop invariant walk_in: i == 0 || j0 + (i - 1) * period < size;
-                loop invariant walk_room: q + i <= (area + size - y + period - 1) / period;
-                loop invariant kept: s->count == n && s->perfect == \at(s->perfect, Pre) &&
-                    (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
-                    (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
-                        s->class_first[j] == \at(s->class_first[j], Pre) &&
-                        s->class_size[j] == \at(s->class_size[j], Pre));
-                loop invariant first_is: first == s->class_first[k] && end == first + size;
-                loop invariant walk_listed: \forall integer m; 0 <= m < i ==>
-                    emitted_at(s, out, done0, first, j0, period, m);
-                loop invariant listed_due: \forall integer x; 0 <= x < done ==> listed_at(s, out, x, n, t);
-                loop invariant before: \forall integer x; 0 <= x < done0 ==> out[x] == \at(out[x], LoopEntry);
-                loop assigns slot, done, i, out[0 .. \at(s->perfect, Pre) - 1];
-                loop variant end - slot;
+            /*@ ghost
+              int64_t first = s->class_first[k];
+              int64_t cnt = ((int64_t)size - 1 - j0) / (int64_t)period + 1;
+              step_count_members(period, j0, size, cnt);
+              step_due_members(period, area, y, q, j0, cnt, size);
             */
-            do {
-                /*@ ghost step_class_more(period, area, y, q, j0, i, size); */
-                /*@ ghost step_due_member(period, area, y, q, j0, i); */
-                /*@ assert slot_ok: slots_slot_ok{Pre}(s, t, slot); */
-                /*@ assert slot_due: s->order[slot] < n && s->pv[s->order[slot]] == k &&
-                        t % pow2(s->pv[s->order[slot]]) == s->offset[s->order[slot]]; */
-                /*@ assert in_room: done < \at(s->perfect, Pre) && slot < BSCHED_MAX_PROCS; */
-                /*@ ghost Emit: ; */
-                out[done] = s->order[slot];
-                /*@ assert wrote: out[done] == \at(s->order[slot], Emit) &&
-                        (\forall integer x; 0 <= x < \at(s->perfect, Pre) && x != done ==>
-                            out[x] == \at(out[x], Emit)) &&
-                        (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Emit)); */
-                /*@ assert listed_new: listed_at(s, out, done, n, t); */
-                /*@ assert listed_old: \forall integer x; 0 <= x < done ==> listed_at(s, out, x, n, t); */
-                /*@ assert walk_new: emitted_at(s, out, done0, first, j0, period, i); */
-                /*@ assert walk_old: \forall integer m; 0 <= m < i ==> emitted_at(s, out, done0, first, j0, period, m); */
-                done++;
-                slot += period;
-                /*@ ghost i = i + 1; */
-            } while (slot < end); /* at most class_size[k] runs */
-            /*@ assert walk_all: \forall integer m; 0 <= m < i ==>
-                    out[done0 + m] == s->order[s->class_first[k] + (j0 + m * period)]; */
-            /*@ assert listed_all: \forall integer x; 0 <= x < done ==>
+            /*@ assert cnt_range: 1 <= cnt <= size && j0 + (cnt - 1) * period < size <= j0 + cnt * period &&
+                    cnt == (size - 1 - j0) / period + 1; */
+            /*@ assert first_is: first == class_first(&s->pv[0], n, k) && first + size <= n; */
+            /*@ assert walk_due: \forall integer m; 0 <= m < cnt ==>
+                    walk_residue(area, j0, period, y, size, m) &&
+                    walk_member_ok{Pre}(s, t, n, first, j0, period, m); */
+            /*@ assert fits: done + (cnt - 1) < \at(s->perfect, Pre); */
+            done = emit_members(out, done, s->order, s->class_first[k], slot, size, period);
+            /*@ ghost i = cnt; */
+            /*@ assert listed_new: \forall integer x; done0 <= x < done ==>
+                    \let d = first + (j0 + (x - done0) * period);
+                    walk_member_ok{Pre}(s, t, n, first, j0, period, x - done0) &&
+                    out[x] == \at(s->order[d], Pre) &&
                     out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
+            /*@ assert walk_all: \forall integer m; 0 <= m < i ==>
+                    \let d = first + (j0 + m * period); out[done0 + m] == \at(s->order[d], Pre); */
         }
         /*@ ghost step_class_count(period, area, y, q, j0, i, size); */
         /*@ ghost step_member_index(period, area, y, q, j0, i, size); */

@@ -204,6 +204,58 @@
   }
 */
 
+/* A class walk from member j0 in steps of p visits cnt = (size - 1 - j0) / p + 1
+ * members: the last one is inside the class, the next one past it. */
+/*@ ghost
+  /@ requires 1 <= p <= 2147483648 && 0 <= j0 < size <= 65535;
+     requires cnt == (size - 1 - j0) / p + 1;
+     assigns \nothing;
+     ensures count_range: 1 <= cnt <= size;
+     ensures last_in: j0 + (cnt - 1) * p < size;
+     ensures next_out: size <= j0 + cnt * p;
+  @/
+  void step_count_members(int64_t p, int64_t j0, int64_t size, int64_t cnt)
+  {
+    lemma_div_unique((uint64_t)(size - 1 - j0), (uint64_t)p, (uint64_t)((size - 1 - j0) / p),
+                     (uint64_t)((size - 1 - j0) % p));
+  }
+*/
+
+/*@
+  // Member m of a class walk (from residue j0 in steps of p) is inside the
+  // class and at residue y.
+  predicate walk_residue(integer b, integer j0, integer p, integer y, integer size, integer m) =
+      (b + (j0 + m * p)) % p == y && j0 + m * p < size;
+*/
+
+/* Every member of the walk is at residue y (step_due_member for each). */
+/*@ ghost
+  /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= q && 1 <= cnt <= 65536;
+     requires 0 <= b <= 281474976710656 && 0 <= j0 < p && b + j0 == y + p * q;
+     requires q <= 281474976710656;
+     requires last_in: j0 + (cnt - 1) * p < size;
+     assigns \nothing;
+     ensures members_due: \forall integer m; 0 <= m < cnt ==> walk_residue(b, j0, p, y, size, m);
+  @/
+  void step_due_members(int64_t p, int64_t b, int64_t y, int64_t q, int64_t j0, int64_t cnt,
+                        int64_t size)
+  {
+    int64_t i = 0;
+    /@ loop invariant 0 <= i <= cnt;
+       loop invariant \forall integer m; 0 <= m < i ==> walk_residue(b, j0, p, y, size, m);
+       loop assigns i;
+       loop variant cnt - i;
+    @/
+    while (i < cnt) {
+      step_due_member(p, b, y, q, j0, i);
+      /@ assert rest: (cnt - 1 - i) * p >= 0; @/
+      /@ assert inside: j0 + i * p < size; @/
+      /@ assert this: walk_residue(b, j0, p, y, size, i); @/
+      i = i + 1;
+    }
+  }
+*/
+
 /* below(B) == q: no member before j0 is at residue Y. */
 /*@ ghost
   /@ requires 1 <= p <= 2147483648 && 0 <= y < p && 0 <= j0 < p && 0 <= q;
@@ -387,6 +439,14 @@
   // out[x] is a process due in cycle t.
   predicate listed_at{L}(struct bsched *s, uint16_t *out, integer x, integer n, integer t) =
       out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+
+  // Member m of the class walk whose first slot is `first` holds a process
+  // due in cycle t (and its slot fact, which the due-ness comes from).
+  predicate walk_member_ok{L}(struct bsched *s, integer t, integer n, integer first,
+                              integer j0, integer p, integer m) =
+      slots_slot_ok(s, t, first + (j0 + m * p)) &&
+      s->order[first + (j0 + m * p)] < n &&
+      t % pow2(s->pv[s->order[first + (j0 + m * p)]]) == s->offset[s->order[first + (j0 + m * p)]];
 
   // The m-th member emitted for a class (first slot first, residue j0, step p).
   predicate emitted_at{L}(struct bsched *s, uint16_t *out, integer done0, integer first,
