@@ -522,7 +522,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     assigns out[done .. done + (size - 1 - j0) / p];
     ensures count: \result == done + (size - 1 - j0) / p + 1;
     ensures emitted_at: \forall integer x; done <= x < \result ==>
-        out[x] == order[first + (j0 + (x - done) * p)];
+        out[x] == \old(order[first + (j0 + (x - done) * p)]);
 */
 static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
                            size_t first, size_t j0, size_t size, size_t p)
@@ -536,17 +536,20 @@ static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
     */
     /*@ loop invariant walk: 0 <= m < cnt && slot == first + (j0 + m * p) && slot < end;
         loop invariant counted: done == \at(done, Pre) + m;
+        loop invariant kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> order[d] == \at(order[d], Pre);
         loop invariant emitted: \forall integer x; \at(done, Pre) <= x < done ==>
-            out[x] == order[first + (j0 + (x - \at(done, Pre)) * p)];
+            out[x] == \at(order[first + (j0 + (x - \at(done, Pre)) * p)], Pre);
         loop assigns slot, done, m, out[\at(done, Pre) .. \at(done, Pre) + (size - 1 - j0) / p];
         loop variant end - slot;
     */
     do {
         /*@ assert in_room: done <= \at(done, Pre) + (size - 1 - j0) / p; */
+        /*@ assert read_old: \let d = first + (j0 + m * p); d == slot && order[d] == \at(order[d], Pre); */
         out[done] = order[slot];
-        /*@ assert wrote_new: out[done] == order[first + (j0 + (done - \at(done, Pre)) * p)]; */
+        /*@ assert wrote_new: \let d = first + (j0 + (done - \at(done, Pre)) * p); out[done] == \at(order[d], Pre); */
         /*@ assert wrote_old: \forall integer x; \at(done, Pre) <= x < done ==>
-                out[x] == order[first + (j0 + (x - \at(done, Pre)) * p)]; */
+                out[x] == \at(order[first + (j0 + (x - \at(done, Pre)) * p)], Pre); */
+        /*@ assert wrote_kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> order[d] == \at(order[d], Pre); */
         done++;
         slot += p;
         /*@ ghost m = m + 1; */
@@ -556,9 +559,84 @@ static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
     return done;
 }
 
+/* Class k's processes due in minor cycle t, appended to out[] from index
+ * done on, in execution order; returns the new count. top = rev_k(t mod 2^k):
+ * member j of the class is due iff j == j0 (mod 2^k) with
+ * j0 = (top + lead_k) mod 2^k, so the due members are j0, j0 + 2^k, ... below
+ * the class size (spec/bsched_step.h). A function of its own so that its
+ * proof sees one class's facts, not the whole of collect_due's loop. */
+/* out[] may lie in *s (bsched_step passes s->ran): the state's 16-bit fields
+ * are read in the pre-state (\old) in the postconditions. */
+/*@ requires valid: \valid_read(s) && \valid(out + (done .. s->perfect - 1));
+    requires separated: \separated(out + (done .. s->perfect - 1), &s->count, &s->perfect,
+        &s->pv[0 .. BSCHED_MAX_PROCS - 1], &s->offset[0 .. BSCHED_MAX_PROCS - 1],
+        &s->order[0 .. BSCHED_MAX_PROCS - 1], &s->class_first[0 .. BSCHED_MAX_PV],
+        &s->class_size[0 .. BSCHED_MAX_PV], &s->class_lead[0 .. BSCHED_MAX_PV]);
+    requires k_range: k <= BSCHED_MAX_PV && 1 <= pow2(k) <= 2147483648 && (1 << k) == pow2(k);
+    requires count: s->count <= BSCHED_MAX_PROCS && done <= s->perfect <= BSCHED_MAX_PROCS;
+    requires table: s->class_first[k] == class_first(&s->pv[0], s->count, k) &&
+        s->class_size[k] == class_count(&s->pv[0], s->count, k) &&
+        class_first(&s->pv[0], s->count, k + 1) == s->class_first[k] + s->class_size[k] &&
+        s->class_first[k] + s->class_size[k] <= s->count &&
+        s->class_lead[k] == pow2(k) - class_start(&s->pv[0], s->count, k);
+    requires start: start_area_at(s, k);
+    requires top: top == rev(k, t % pow2(k)) && 0 <= top < pow2(k);
+    requires due: class_due_at(s, t, k) && class_member_due_at(s, t, k);
+    requires room: done + walk_hits(class_area(&s->pv[0], s->count, k), s->class_size[k], top, pow2(k)) <=
+        s->perfect;
+    assigns out[done .. s->perfect - 1];
+    ensures counted: \result == done + walk_hits(class_area(&s->pv[0], \old(s->count), k),
+        \old(s->class_size[k]), top, pow2(k));
+    ensures listed: \forall integer x; done <= x < \result ==>
+        out[x] < \old(s->count) && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+    ensures all: \forall integer d; \old(s->class_first[k]) <= d < \old(s->class_first[k] + s->class_size[k]) &&
+        t % pow2(s->pv[\old(s->order[d])]) == s->offset[\old(s->order[d])] ==>
+        \exists integer x; done <= x < \result && out[x] == \old(s->order[d]);
+*/
+static size_t collect_class(const struct bsched *s, uint32_t k, uint32_t top, uint16_t *out, size_t done)
+    /*@ ghost (uint32_t t) */
+{
+    uint32_t period = period_of(k);
+    uint32_t lead = s->class_lead[k];
+    size_t first = s->class_first[k];
+    size_t size = s->class_size[k];
+    size_t slot;
+    size_t next = done;
+    /*@ ghost
+      int64_t area = slots_area(s->pv, s->count, (int)k);
+    */
+    /*@ assert area_is: area == class_area(&s->pv[0], s->count, k) &&
+            class_start(&s->pv[0], s->count, k) == area % period; */
+    /*@ assert lead_is: lead == period - area % period && 1 <= lead <= period; */
+    /*@ assert sum_ok: top + lead < 4294967296; */
+    slot = (top + lead) % period;
+    /*@ ghost
+      int64_t q = area / (int64_t)period + 1 - ((int64_t)top + (int64_t)lead) / (int64_t)period;
+      step_class_walk(period, area, top, lead, size, slot, q);
+    */
+    if (slot < size) {
+        /*@ assert fits: done + (size - 1 - slot) / period < s->perfect; */
+        next = emit_members(out, done, s->order, first, slot, size, period);
+    }
+    /*@ assert hits: next == done + walk_hits(area, size, top, period); */
+    /*@ assert walked: \forall integer x; done <= x < next ==>
+            walk_residue(area, slot, period, top, size, x - done); */
+    /*@ assert emitted: \let f = first; \let j0 = slot; \let p = period;
+            \forall integer x; done <= x < next ==> out[x] == \at(s->order[f + (j0 + (x - done) * p)], Pre); */
+    /*@ assert listed: \let f = first; \let j0 = slot; \let p = period; \forall integer x; done <= x < next ==>
+            walk_residue(area, j0, p, top, size, x - done) &&
+            out[x] == \at(s->order[f + (j0 + (x - done) * p)], Pre) &&
+            out[x] < \at(s->count, Pre) && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
+    /*@ assert all: \forall integer d; first <= d < first + size &&
+            residue_at(area, period, top, d - first) ==>
+            \let m = (area + (d - first)) / period - q;
+            walk_index(d - first, slot, period, m, walk_hits(area, size, top, period)) &&
+            done <= done + m < next && out[done + m] == \at(s->order[d], Pre); */
+    return next;
+}
+
 /* The processes due in minor cycle t, in execution order, into out[], from
- * reversed = rev_maxpv(t): class by class upwards, member j of class k is due
- * iff j == j0 (mod 2^k), j0 = (rev_k(t mod 2^k) + lead_k) mod 2^k, and
+ * reversed = rev_maxpv(t): class by class upwards (collect_class), where
  * rev_k(t mod 2^k) is the top k of the maxpv bits of `reversed`
  * (spec/bsched_step.h). Returns how many: load(t), at most `perfect` (the
  * balance theorem), so Fig. 7's cap is not needed. */
@@ -614,106 +692,22 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         loop variant maxpv + 1 - k;
     */
     for (k = s->minpv; k <= maxpv; k++) {
-        uint32_t period = period_of(k);
-        uint32_t top_period = period_of(maxpv - k);
-        uint32_t top = reversed / top_period;
-        size_t slot = (top + s->class_lead[k]) % period;
-        size_t size = s->class_size[k];
-        /*@ ghost
-          int64_t area = slots_area(s->pv, n, (int)k);
-          int64_t y = (int64_t)top;
-          int64_t j0 = (int64_t)slot;
-          int64_t q = area / (int64_t)period + 1 - (y + (int64_t)s->class_lead[k]) / (int64_t)period;
-          int64_t i = 0;
-          size_t done0 = done;
-        */
-        /*@ assert period_is: period == pow2(k) && 1 <= period <= 2147483648; */
-        /*@ assert shift_ok: 0 <= maxpv - k <= BSCHED_MAX_PV && (uint32_t)(maxpv - k) == maxpv - k; */
-        /*@ assert top_instance: top_at(reversed, maxpv, t, k) && start_area_at{Pre}(s, k); */
-        /*@ assert top_period_is: top_period == pow2(maxpv - k) && top_period >= 1; */
-        /*@ assert top_is: top == reversed / pow2(maxpv - k); */
-        /*@ assert y_is: y == rev(k, t % pow2(k)) && 0 <= y < period; */
-        /*@ assert lead_table: s->class_lead[k] == pow2(k) - class_start(&s->pv[0], n, k); */
-        /*@ assert area_is: area == class_area(&s->pv[0], n, k); */
-        /*@ assert start_is: class_start(&s->pv[0], n, k) == class_area(&s->pv[0], n, k) % pow2(k); */
-        /*@ assert start_area: class_start(&s->pv[0], n, k) == class_area(&s->pv[0], n, k) % pow2(k) &&
-                area == class_area(&s->pv[0], n, k); */
-        /*@ assert lead_is: s->class_lead[k] == period - area % period; */
-        /*@ ghost step_residue(period, area, y, s->class_lead[k], j0); */
-        /*@ ghost step_class_start(period, area, y, q, j0); */
-        /*@ assert class_range: class_first(&s->pv[0], n, k + 1) == s->class_first[k] + size <= n &&
-                s->class_first[k] == class_first(&s->pv[0], n, k) &&
-                size == class_count(&s->pv[0], n, k); */
-        /*@ assert class_hits_instance: class_hits_at{Pre}(s, t, k); */
-        /*@ assert class_hits_unfolded: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
-                due_slots{Pre}(s, t, class_first(&s->pv[0], n, k)) +
-                (class_area(&s->pv[0], n, k) + class_count(&s->pv[0], n, k) -
-                 rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
-                (class_area(&s->pv[0], n, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k); */
-        /*@ assert class_hits: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) ==
-                done0 + ((area + size - y + period - 1) / period - (area - y + period - 1) / period); */
-        /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= \at(s->perfect, Pre); */
-
-        if (slot < size) {
-            /*@ ghost
-              int64_t first = s->class_first[k];
-              int64_t cnt = ((int64_t)size - 1 - j0) / (int64_t)period + 1;
-              step_count_members(period, j0, size, cnt);
-              step_due_members(period, area, y, q, j0, cnt, size);
-            */
-            /*@ assert cnt_range: 1 <= cnt <= size && j0 + (cnt - 1) * period < size <= j0 + cnt * period &&
-                    cnt == (size - 1 - j0) / period + 1; */
-            /*@ assert first_is: first == class_first(&s->pv[0], n, k) && first + size <= n; */
-            /*@ assert walk_due: \forall integer m; 0 <= m < cnt ==>
-                    walk_residue(area, j0, period, y, size, m) &&
-                    walk_member_ok{Pre}(s, t, n, first, j0, period, m); */
-            /*@ assert fits: done + (cnt - 1) < \at(s->perfect, Pre); */
-            done = emit_members(out, done, s->order, s->class_first[k], slot, size, period);
-            /*@ ghost i = cnt; */
-            /*@ assert listed_new: \forall integer x; done0 <= x < done ==>
-                    \let d = first + (j0 + (x - done0) * period);
-                    walk_member_ok{Pre}(s, t, n, first, j0, period, x - done0) &&
-                    out[x] == \at(s->order[d], Pre) &&
-                    out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
-            /*@ assert walk_all: \forall integer m; 0 <= m < i ==>
-                    \let d = first + (j0 + m * period); out[done0 + m] == \at(s->order[d], Pre); */
-        }
-        /*@ ghost step_class_count(period, area, y, q, j0, i, size); */
-        /*@ ghost step_member_index(period, area, y, q, j0, i, size); */
-        /*@ assert class_counted: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)); */
-        /*@ assert class_index: \forall integer d; class_first(&s->pv[0], n, k) <= d <
-                class_first(&s->pv[0], n, k + 1) &&
-                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
-                0 <= (area + (d - s->class_first[k])) / period - q < i &&
-                out[done0 + ((area + (d - s->class_first[k])) / period - q)] == \at(s->order[d], Pre); */
-        /*@ assert class_listed: \forall integer d; class_first(&s->pv[0], n, k) <= d <
-                class_first(&s->pv[0], n, k + 1) &&
-                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
-                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
-        /*@ assert old_listed: \forall integer d; 0 <= d < class_first(&s->pv[0], n, k) &&
-                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
-                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
-        /*@ assert k_next: (uint32_t)(k + 1) == k + 1; */
-        /*@ assert counted_next: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, (uint32_t)(k + 1))); */
-        /*@ assert listed_next: \forall integer d; 0 <= d < class_first(&s->pv[0], n, (uint32_t)(k + 1)) &&
-                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
-                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
-        /*@ assert listed_due_next: \forall integer x; 0 <= x < done ==>
-                out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]]; */
-        /*@ assert kept_next: s->count == n && s->perfect == \at(s->perfect, Pre) &&
-                (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
-                (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
-                    s->class_first[j] == \at(s->class_first[j], Pre) &&
-                    s->class_size[j] == \at(s->class_size[j], Pre)); */
+        uint32_t top = reversed / period_of(maxpv - k);
+        /*@ assert facts: top_at(reversed, maxpv, t, k) && start_area_at{Pre}(s, k) &&
+                class_hits_at{Pre}(s, t, k) && class_due_at{Pre}(s, t, k); */
+        /*@ assert top_is: top == rev(k, t % pow2(k)) && 0 <= top < pow2(k); */
+        /*@ assert member_facts: class_member_due_at{Pre}(s, t, k); */
+        /*@ assert frame_due: class_due_at(s, t, k); */
+        /*@ assert frame_member: class_member_due_at(s, t, k); */
+        /*@ assert frame_start: start_area_at(s, k); */
+        /*@ assert room: done + walk_hits(class_area(&s->pv[0], n, k), s->class_size[k], top, pow2(k)) ==
+                due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) <= s->perfect; */
+        done = collect_class(s, k, top, out, done) /*@ ghost (t) */;
+        /*@ assert counted_next: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)); */
     }
-    /*@ assert all_slots: k == maxpv + 1 && class_first(&s->pv[0], n, k) == n; */
-    /*@ assert all_listed: \forall integer d; 0 <= d < n &&
-            t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
-            \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+    /*@ assert all_slots: class_first(&s->pv[0], n, k) == n; */
     /*@ assert all_procs: \forall integer i; 0 <= i < n && t % pow2(s->pv[i]) == s->offset[i] ==>
             \let d = sorted_pos(&s->pv[0], n, i); 0 <= d < n && \at(s->order[d], Pre) == i; */
-    /*@ assert final_listed: \forall integer i; 0 <= i < n && t % pow2(s->pv[i]) == s->offset[i] ==>
-            \exists integer x; 0 <= x < done && out[x] == i; */
     /*@ assert done_small: done == due_slots{Pre}(s, t, n) <= \at(s->perfect, Pre) <= n; */
     return (uint32_t)done;
 }

@@ -175,10 +175,15 @@
      assigns \nothing;
      ensures residue: b + j0 == y + p * (b / p + 1 - (y + lead) / p);
      ensures residue_q: b / p + 1 - (y + lead) / p >= 0;
+     ensures residue_q_small: b / p + 1 - (y + lead) / p <= 281474976710656;
      ensures j0_range: 0 <= j0 < p;
   @/
   void step_residue(int64_t p, int64_t b, int64_t y, int64_t lead, int64_t j0)
   {
+    lemma_bal_div_bounds();
+    lemma_bal_mul_mono();
+    /@ assert p_one: p == 1 ==> b / p == b && b % p == 0 && y == 0 && lead == 1 && (y + lead) / p == 1; @/
+    /@ assert p_two: p >= 2 ==> 2 * (b / p) <= p * (b / p) <= b; @/
     /@ assert euclid_b: b == p * (b / p) + b % p && 0 <= b % p < p && b / p >= 0; @/
     /@ assert lead_range: 1 <= lead <= p && 1 <= y + lead < 2 * p; @/
     /@ assert euclid_j: y + lead == p * ((y + lead) / p) + j0 && 0 <= j0 < p; @/
@@ -222,10 +227,13 @@
 */
 
 /*@
+  // Member j of a class whose area is b sits at residue y (period p).
+  predicate residue_at(integer b, integer p, integer y, integer j) = (b + j) % p == y;
+
   // Member m of a class walk (from residue j0 in steps of p) is inside the
   // class and at residue y.
   predicate walk_residue(integer b, integer j0, integer p, integer y, integer size, integer m) =
-      (b + (j0 + m * p)) % p == y && j0 + m * p < size;
+      residue_at(b, p, y, j0 + m * p) && 0 <= j0 + m * p < size;
 */
 
 /* Every member of the walk is at residue y (step_due_member for each). */
@@ -248,6 +256,7 @@
     @/
     while (i < cnt) {
       step_due_member(p, b, y, q, j0, i);
+      /@ assert nonneg: i * p >= 0; @/
       /@ assert rest: (cnt - 1 - i) * p >= 0; @/
       /@ assert inside: j0 + i * p < size; @/
       /@ assert this: walk_residue(b, j0, p, y, size, i); @/
@@ -380,6 +389,54 @@
   }
 */
 
+/*@
+  // Class k's due count from its area b, size c and residue y (period p):
+  // below(b + c) - below(b), the members j < c with (b + j) mod p == y.
+  logic integer walk_hits(integer b, integer c, integer y, integer p) =
+      (b + c - y + p - 1) / p - (b - y + p - 1) / p;
+
+  // Member j is the walk's member number (j - j0) / p, one of the first h.
+  predicate walk_index(integer j, integer j0, integer p, integer m, integer h) =
+      0 <= m < h && j == j0 + m * p;
+*/
+
+/* A class's walk in one contract over plain values (area b, size, residue y,
+ * lead = p - b mod p): it starts at j0 = (y + lead) mod p, visits
+ * walk_hits(b, size, y, p) members, each at residue y, and every member j at
+ * residue y is member number (b + j) / p - q of the walk,
+ * q = b / p + 1 - (y + lead) / p. */
+/*@ ghost
+  /@ requires 1 <= p <= 2147483648 && 0 <= b <= 281474976710656 && 0 <= y < p;
+     requires lead == p - b % p && 0 <= size <= 65535;
+     requires j0 == (y + lead) % p && q == b / p + 1 - (y + lead) / p;
+     assigns \nothing;
+     ensures j0_range: 0 <= j0 < p;
+     ensures none: j0 >= size ==> walk_hits(b, size, y, p) == 0;
+     ensures some: j0 < size ==> walk_hits(b, size, y, p) == (size - 1 - j0) / p + 1;
+     ensures members: \forall integer m; 0 <= m < walk_hits(b, size, y, p) ==>
+         walk_residue(b, j0, p, y, size, m);
+     ensures index: \forall integer j; 0 <= j < size && residue_at(b, p, y, j) ==>
+         walk_index(j, j0, p, (b + j) / p - q, walk_hits(b, size, y, p));
+  @/
+  void step_class_walk(int64_t p, int64_t b, int64_t y, int64_t lead, int64_t size,
+                       int64_t j0, int64_t q)
+  {
+    int64_t cnt = 0;
+    step_residue(p, b, y, lead, j0);
+    step_class_start(p, b, y, q, j0);
+    if (j0 < size) {
+      cnt = (size - 1 - j0) / p + 1;
+      step_count_members(p, j0, size, cnt);
+      step_due_members(p, b, y, q, j0, cnt, size);
+    }
+    step_class_count(p, b, y, q, j0, cnt, size);
+    /@ assert hits: walk_hits(b, size, y, p) == cnt; @/
+    step_member_index(p, b, y, q, j0, cnt, size);
+    /@ assert index_x: \forall integer j; 0 <= j < size && (b + j) % p == y ==>
+           0 <= (b + j) / p - q < cnt && j == j0 + ((b + j) / p - q) * p; @/
+  }
+*/
+
 /* lemma_slots_class for every class at once, so that collect_due can state
  * the class counts in its pre-state (it writes out[], which may share memory
  * with the state's other 16-bit fields). */
@@ -424,9 +481,8 @@
   predicate class_hits_at{L}(struct bsched *s, integer t, integer k) =
       due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
       due_slots(s, t, class_first(&s->pv[0], s->count, k)) +
-      (class_area(&s->pv[0], s->count, k) + class_count(&s->pv[0], s->count, k) -
-       rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
-      (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k);
+      walk_hits(class_area(&s->pv[0], s->count, k), class_count(&s->pv[0], s->count, k),
+                rev(k, t % pow2(k)), pow2(k));
 
   // The reversed counter's top k bits are rev_k(t mod 2^k).
   predicate top_at(integer reversed, integer maxpv, integer t, integer k) =
@@ -452,6 +508,89 @@
   predicate emitted_at{L}(struct bsched *s, uint16_t *out, integer done0, integer first,
                           integer j0, integer p, integer m) =
       out[done0 + m] == s->order[first + (j0 + m * p)];
+*/
+
+/*@
+  // Slot d of class k holds a process, due in cycle t exactly when member
+  // d - first of the class sits at residue rev_k(t mod 2^k). Stated per slot
+  // d (a bare variable: the trigger is order[d]).
+  predicate class_due_at{L}(struct bsched *s, integer t, integer k) =
+      \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
+          class_first(&s->pv[0], s->count, k + 1) ==>
+          s->order[d] < s->count &&
+          (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+           residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)),
+                      d - class_first(&s->pv[0], s->count, k)));
+*/
+
+/*@
+  // The same by member j of class k: a member at residue rev_k(t mod 2^k)
+  // holds a process due in cycle t (the trigger is residue_at).
+  predicate class_member_due_at{L}(struct bsched *s, integer t, integer k) =
+      \forall integer j; 0 <= j < class_count(&s->pv[0], s->count, k) &&
+          residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)), j) ==>
+          s->order[class_first(&s->pv[0], s->count, k) + j] < s->count &&
+          t % pow2(s->pv[s->order[class_first(&s->pv[0], s->count, k) + j]]) ==
+              s->offset[s->order[class_first(&s->pv[0], s->count, k) + j]];
+*/
+
+/* slots_slot_ok for the slots of one class, with the class's own k in place
+ * of pv[order[d]] (the slot ranges are disjoint). */
+/*@ ghost
+  /@ requires \valid_read(s) && well_formed(s);
+     requires slots: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
+     requires first_next: \forall integer k; lo <= k <= hi ==>
+         0 <= class_first(&s->pv[0], s->count, k) &&
+         class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k + 1) <= s->count;
+     requires 0 <= lo && hi <= BSCHED_MAX_PV;
+     assigns \nothing;
+     ensures class_due: \forall integer k; lo <= k <= hi ==> class_due_at(s, t, k);
+  @/
+  void step_class_due(struct bsched *s, uint32_t t, int lo, int hi)
+  {
+    lemma_first(s->pv, s->count);
+    /@ assert in_class: \forall integer k, d; lo <= k <= hi &&
+           class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+           0 <= d < s->count && slots_slot_ok(s, t, d) && s->pv[s->order[d]] == k && s->order[d] < s->count; @/
+    /@ assert in_class_due: \forall integer k, d; lo <= k <= hi &&
+           class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+           (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+            (class_area(&s->pv[0], s->count, k) + (d - class_first(&s->pv[0], s->count, k))) % pow2(k) ==
+               rev(k, t % pow2(k))); @/
+  }
+*/
+
+/* The same by member: member j of class k is slot class_first(k) + j. */
+/*@ ghost
+  /@ requires \valid_read(s) && well_formed(s);
+     requires slots: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
+     requires first_next: \forall integer k; lo <= k <= hi ==>
+         0 <= class_first(&s->pv[0], s->count, k) &&
+         class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k + 1) <= s->count;
+     requires 0 <= lo && hi <= BSCHED_MAX_PV;
+     assigns \nothing;
+     ensures member_due: \forall integer k; lo <= k <= hi ==> class_member_due_at(s, t, k);
+  @/
+  void step_class_member_due(struct bsched *s, uint32_t t, int lo, int hi)
+  {
+    lemma_first(s->pv, s->count);
+    /@ assert in_class: \forall integer k, d; lo <= k <= hi &&
+           class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+           0 <= d < s->count && slots_slot_ok(s, t, d) && s->pv[s->order[d]] == k && s->order[d] < s->count; @/
+    /@ assert by_member: \forall integer k, j; lo <= k <= hi && 0 <= j < class_count(&s->pv[0], s->count, k) ==>
+           class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k) + j <
+           class_first(&s->pv[0], s->count, k + 1); @/
+    /@ assert by_member_due: \forall integer k, j; lo <= k <= hi && 0 <= j < class_count(&s->pv[0], s->count, k) ==>
+           \let d = class_first(&s->pv[0], s->count, k) + j;
+           s->order[d] < s->count &&
+           (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+            (class_area(&s->pv[0], s->count, k) + j) % pow2(k) == rev(k, t % pow2(k))); @/
+    /@ assert by_member_at: \forall integer k, j; lo <= k <= hi && 0 <= j < class_count(&s->pv[0], s->count, k) &&
+           residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)), j) ==>
+           s->order[class_first(&s->pv[0], s->count, k) + j] < s->count &&
+           t % pow2(s->pv[s->order[class_first(&s->pv[0], s->count, k) + j]]) ==
+               s->offset[s->order[class_first(&s->pv[0], s->count, k) + j]]; @/
+  }
 */
 
 /* The per-class fact in its named form (class_hits_at), proven apart from
@@ -504,6 +643,8 @@
      ensures classes_at: \forall integer k; s->minpv <= k <= s->maxpv ==> class_hits_at(s, t, k);
      ensures start_area_all: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==> start_area_at(s, k);
      ensures top_all: \forall integer k; s->minpv <= k <= s->maxpv ==> top_at(reversed, s->maxpv, t, k);
+     ensures class_due: \forall integer k; s->minpv <= k <= s->maxpv ==> class_due_at(s, t, k);
+     ensures member_due: \forall integer k; s->minpv <= k <= s->maxpv ==> class_member_due_at(s, t, k);
      ensures start_is_area: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
          class_start(&s->pv[0], s->count, k) == class_area(&s->pv[0], s->count, k) % pow2(k);
      ensures top: \forall integer k; s->minpv <= k <= s->maxpv ==>
@@ -541,6 +682,8 @@
           rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k) -
          (class_area(&s->pv[0], s->count, k) - rev(k, t % pow2(k)) + pow2(k) - 1) / pow2(k); @/
     step_classes_at(s, t);
+    step_class_due(s, t, s->minpv, s->maxpv);
+    step_class_member_due(s, t, s->minpv, s->maxpv);
   }
 */
 

@@ -48,7 +48,7 @@ WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 # thread, so one process would leave a core idle much of the time. Part A takes the library's code behind bsched_init and bsched_step; part B
 # everything else (bsched_due and the lemma functions), so a new function always
 # lands in B and none is left out.
-WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,collect_due,next_reversed
+WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,collect_due,collect_class,next_reversed
 WP_RUNS      = $(if $(WP_FCT),all,a b)
 WP_SEL_all   = -wp-fct $(WP_FCT) -wp-par $(WP_PAR)
 WP_SEL_a     = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
