@@ -581,7 +581,7 @@ static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
         s->class_lead[k] == pow2(k) - class_start(&s->pv[0], s->count, k);
     requires start: start_area_at(s, k);
     requires top: top == rev(k, t % pow2(k)) && 0 <= top < pow2(k);
-    requires due: class_due_at(s, t, k) && class_member_due_at(s, t, k);
+    requires due: class_due_at(s, s->count, t, k) && class_member_due_at(s, t, k);
     requires room: done + walk_hits(class_area(&s->pv[0], s->count, k), s->class_size[k], top, pow2(k)) <=
         s->perfect;
     assigns out[done .. s->perfect - 1];
@@ -592,6 +592,11 @@ static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
     ensures all: \forall integer d; \old(s->class_first[k]) <= d < \old(s->class_first[k] + s->class_size[k]) &&
         t % pow2(s->pv[\old(s->order[d])]) == s->offset[\old(s->order[d])] ==>
         \exists integer x; done <= x < \result && out[x] == \old(s->order[d]);
+    ensures below: \forall integer x; 0 <= x < done ==> out[x] == \old(out[x]);
+    ensures kept: s->count == \old(s->count) && s->perfect == \old(s->perfect) &&
+        (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \old(s->order[d])) &&
+        (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+            s->class_first[j] == \old(s->class_first[j]) && s->class_size[j] == \old(s->class_size[j]));
 */
 static size_t collect_class(const struct bsched *s, uint32_t k, uint32_t top, uint16_t *out, size_t done)
     /*@ ghost (uint32_t t) */
@@ -676,12 +681,14 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
       uint32_t n = s->count;
       step_collect_facts((struct bsched *)s, t, reversed);
     */
+    /*@ assert n_is: n == \at(s->count, Pre); */
     /*@ loop invariant k_range: s->minpv <= k <= maxpv + 1;
-        loop invariant kept: s->count == n && s->perfect == \at(s->perfect, Pre) &&
-            (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
-            (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
-                s->class_first[j] == \at(s->class_first[j], Pre) &&
-                s->class_size[j] == \at(s->class_size[j], Pre));
+        loop invariant kept: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre);
+        loop invariant kept_order: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre);
+        loop invariant kept_first: \forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+                s->class_first[j] == \at(s->class_first[j], Pre);
+        loop invariant kept_size: \forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
+                s->class_size[j] == \at(s->class_size[j], Pre);
         loop invariant counted: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k));
         loop invariant listed_due: \forall integer x; 0 <= x < done ==>
             out[x] < n && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
@@ -694,16 +701,54 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
     for (k = s->minpv; k <= maxpv; k++) {
         uint32_t top = reversed / period_of(maxpv - k);
         /*@ assert facts: top_at(reversed, maxpv, t, k) && start_area_at{Pre}(s, k) &&
-                class_hits_at{Pre}(s, t, k) && class_due_at{Pre}(s, t, k); */
+                class_hits_at{Pre}(s, t, k) && class_due_at{Pre}(s, n, t, k); */
         /*@ assert top_is: top == rev(k, t % pow2(k)) && 0 <= top < pow2(k); */
         /*@ assert member_facts: class_member_due_at{Pre}(s, t, k); */
-        /*@ assert frame_due: class_due_at(s, t, k); */
+        /*@ assert order_same: \forall integer d; class_first(&s->pv[0], n, k) <= d < class_first(&s->pv[0], n, k + 1) ==>
+                s->order[d] == \at(s->order[d], Pre) && s->count == \at(s->count, Pre); */
+        /*@ assert frame_due_at_pre: \forall integer d; class_first(&s->pv[0], \at(s->count, Pre), k) <= d <
+                class_first(&s->pv[0], \at(s->count, Pre), k + 1) ==>
+                \at(s->order[d], Pre) < \at(s->count, Pre) &&
+                (t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] <==>
+                 residue_at(class_area(&s->pv[0], \at(s->count, Pre), k), pow2(k), rev(k, t % pow2(k)),
+                            d - class_first(&s->pv[0], \at(s->count, Pre), k))); */
+        /*@ assert frame_due_pre: \forall integer d; class_first(&s->pv[0], n, k) <= d <
+                class_first(&s->pv[0], n, k + 1) ==>
+                \at(s->order[d], Pre) < n &&
+                (t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] <==>
+                 residue_at(class_area(&s->pv[0], n, k), pow2(k), rev(k, t % pow2(k)),
+                            d - class_first(&s->pv[0], n, k))); */
+        /*@ assert frame_due_order: \forall integer d; class_first(&s->pv[0], n, k) <= d <
+                class_first(&s->pv[0], n, k + 1) ==>
+                s->order[d] < n &&
+                (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+                 residue_at(class_area(&s->pv[0], n, k), pow2(k), rev(k, t % pow2(k)),
+                            d - class_first(&s->pv[0], n, k))); */
+        /*@ assert frame_due: class_due_at(s, n, t, k); */
         /*@ assert frame_member: class_member_due_at(s, t, k); */
         /*@ assert frame_start: start_area_at(s, k); */
         /*@ assert room: done + walk_hits(class_area(&s->pv[0], n, k), s->class_size[k], top, pow2(k)) ==
                 due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)) <= s->perfect; */
+        /*@ ghost size_t done0 = done; */
         done = collect_class(s, k, top, out, done) /*@ ghost (t) */;
         /*@ assert counted_next: done == due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)); */
+        /*@ assert listed_old: \forall integer d; 0 <= d < class_first(&s->pv[0], n, k) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done0 && out[x] == \at(s->order[d], Pre); */
+        /*@ assert listed_class: \forall integer d; class_first(&s->pv[0], n, k) <= d < class_first(&s->pv[0], n, k + 1) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; done0 <= x < done && out[x] == \at(s->order[d], Pre); */
+        /*@ assert grows_first: 0 <= class_first(&s->pv[0], n, k) <= class_first(&s->pv[0], n, k + 1) <= n; */
+        /*@ assert grows_mono: due_slots{Pre}(s, t, class_first(&s->pv[0], n, k)) <=
+                due_slots{Pre}(s, t, class_first(&s->pv[0], n, k + 1)); */
+        /*@ assert grows: done0 <= done; */
+        /*@ assert listed_next_int: \forall integer d; 0 <= d < class_first(&s->pv[0], n, k + 1) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
+        /*@ assert k_next: (uint32_t)(k + 1) == k + 1; */
+        /*@ assert listed_next: \forall integer d; 0 <= d < class_first(&s->pv[0], n, (uint32_t)(k + 1)) &&
+                t % pow2(s->pv[\at(s->order[d], Pre)]) == s->offset[\at(s->order[d], Pre)] ==>
+                \exists integer x; 0 <= x < done && out[x] == \at(s->order[d], Pre); */
     }
     /*@ assert all_slots: class_first(&s->pv[0], n, k) == n; */
     /*@ assert all_procs: \forall integer i; 0 <= i < n && t % pow2(s->pv[i]) == s->offset[i] ==>

@@ -514,13 +514,13 @@
   // Slot d of class k holds a process, due in cycle t exactly when member
   // d - first of the class sits at residue rev_k(t mod 2^k). Stated per slot
   // d (a bare variable: the trigger is order[d]).
-  predicate class_due_at{L}(struct bsched *s, integer t, integer k) =
-      \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
-          class_first(&s->pv[0], s->count, k + 1) ==>
-          s->order[d] < s->count &&
+  predicate class_due_at{L}(struct bsched *s, integer n, integer t, integer k) =
+      \forall integer d; class_first(&s->pv[0], n, k) <= d <
+          class_first(&s->pv[0], n, k + 1) ==>
+          s->order[d] < n &&
           (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
-           residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)),
-                      d - class_first(&s->pv[0], s->count, k)));
+           residue_at(class_area(&s->pv[0], n, k), pow2(k), rev(k, t % pow2(k)),
+                      d - class_first(&s->pv[0], n, k)));
 */
 
 /*@
@@ -544,7 +544,13 @@
          class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k + 1) <= s->count;
      requires 0 <= lo && hi <= BSCHED_MAX_PV;
      assigns \nothing;
-     ensures class_due: \forall integer k; lo <= k <= hi ==> class_due_at(s, t, k);
+     ensures class_due: \forall integer k; lo <= k <= hi ==> class_due_at(s, s->count, t, k);
+     ensures class_due_slots: \forall integer k, d; lo <= k <= hi &&
+         class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+         s->order[d] < s->count &&
+         (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+          residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)),
+                     d - class_first(&s->pv[0], s->count, k)));
   @/
   void step_class_due(struct bsched *s, uint32_t t, int lo, int hi)
   {
@@ -643,7 +649,13 @@
      ensures classes_at: \forall integer k; s->minpv <= k <= s->maxpv ==> class_hits_at(s, t, k);
      ensures start_area_all: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==> start_area_at(s, k);
      ensures top_all: \forall integer k; s->minpv <= k <= s->maxpv ==> top_at(reversed, s->maxpv, t, k);
-     ensures class_due: \forall integer k; s->minpv <= k <= s->maxpv ==> class_due_at(s, t, k);
+     ensures class_due: \forall integer k; s->minpv <= k <= s->maxpv ==> class_due_at(s, s->count, t, k);
+     ensures class_due_slots: \forall integer k, d; s->minpv <= k <= s->maxpv &&
+         class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+         s->order[d] < s->count &&
+         (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+          residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)),
+                     d - class_first(&s->pv[0], s->count, k)));
      ensures member_due: \forall integer k; s->minpv <= k <= s->maxpv ==> class_member_due_at(s, t, k);
      ensures start_is_area: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
          class_start(&s->pv[0], s->count, k) == class_area(&s->pv[0], s->count, k) % pow2(k);
