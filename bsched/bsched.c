@@ -407,6 +407,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     minpv = maxpv;
     /*@ loop invariant 0 <= i <= n;
         loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
+        loop invariant copied_pre: \forall integer j; 0 <= j < i ==> s->pv[j] == \at(pv[j], Pre);
         loop invariant minpv_is_min: minpv <= maxpv && \forall integer j; 0 <= j < i ==> minpv <= pv[j];
         loop invariant offsets_kept: \forall integer j; 0 <= j < n ==>
             s->offset[j] == init_wait{Pre}(pv, count, j);
@@ -419,6 +420,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             minpv = pv[i];
         }
     }
+    /*@ assert pv_copied_loop: \forall integer j; 0 <= j < n ==> s->pv[j] == \at(pv[j], Pre); */
     s->perfect = (uint16_t)perfect;
     s->count = (uint16_t)count;
     s->maxpv = (uint8_t)maxpv;
