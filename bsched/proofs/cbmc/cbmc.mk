@@ -49,7 +49,7 @@ cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC
 
 CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
 $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
-CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors fast fast-due
+CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
 CBMC_HARNESS_step        := step
 CBMC_ARGS_step           := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_balance     := balance
@@ -60,17 +60,6 @@ CBMC_HARNESS_init        := init
 CBMC_ARGS_init           := ORDERS=any N=6 P=3
 CBMC_HARNESS_errors      := errors
 CBMC_ARGS_errors         := N=8
-# bsched_fast (bsched/fast/): equal to Fig. 7's bsched_step cycle by cycle, by
-# induction over the cycles from any state of the periodicity invariant with the
-# closed-form offsets (fast), and bsched_fast_due / bsched_wait equal to bsched_due
-# / wait[] (fast-due). Below the goal bounds (see bsched/proofs/README.md).
-CBMC_FAST_N ?= 4
-CBMC_FAST_P ?= 3
-CBMC_HARNESS_fast        := fast
-CBMC_ARGS_fast           := N=$(CBMC_FAST_N) P=$(CBMC_FAST_P)
-CBMC_HARNESS_fast-due    := fast
-CBMC_ARGS_fast-due       := N=$(CBMC_FAST_N) P=$(CBMC_FAST_P) EXTRA_DEFINES=-DPROOF_FAST_DUE=1
-
 # The negative check: the unbalanced mutant must be caught by every harness that
 # runs bsched_init (balance takes its offsets from bsched_init for this).
 CBMC_MUTANT_RUNS := major_cycle init balance
