@@ -13,6 +13,7 @@
 #include "spec/bsched_rev.h"
 #include "spec/bsched_balance.h"
 #include "spec/bsched_slots.h"
+#include "spec/bsched_step.h"
 
 /* The low `bits` bits of x in reverse order (Fig. 6's reverse()).
  * BSCHED_MUTANT_NO_REVERSE builds a deliberately wrong variant (identity
@@ -56,7 +57,7 @@ static uint32_t reverse_bits(uint32_t x, uint32_t bits)
     assigns \nothing;
     ensures is_pow2: \result == pow2(pv);
 */
-static uint32_t period_of(uint8_t pv)
+static uint32_t period_of(uint32_t pv)
 {
     /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
     return (uint32_t)1u << pv;
@@ -326,14 +327,14 @@ static uint32_t perfect_load(const struct bsched_classes *c, const uint8_t *pv, 
       assumes \forall integer i; 0 <= i < count ==> pv[i] <= BSCHED_MAX_PV;
       ensures ok_result: \result == BSCHED_OK;
       ensures ok_well_formed: well_formed(s);
-      ensures ok_in_phase: in_phase(s);
-      ensures ok_count: s->count == count && s->cycle == 0 && s->ran_count == 0;
+      ensures ok_count: s->count == count && s->cycle == 0 && s->ran_count == 0 && s->reversed == 0;
       ensures ok_maxpv: s->maxpv == max_pv{Pre}(pv, count);
       ensures ok_pv: \forall integer i; 0 <= i < count ==> s->pv[i] == pv[i];
       ensures ok_closed_form: \forall integer i; 0 <= i < count ==>
           s->offset[i] == init_wait{Pre}(pv, count, i);
-      ensures ok_wait_offset: \forall integer i; 0 <= i < count ==>
-          s->wait[i] == s->offset[i] < pow2(pv[i]);
+      ensures ok_offset_range: \forall integer i; 0 <= i < count ==> s->offset[i] < pow2(pv[i]);
+      ensures ok_minpv: \forall integer i; 0 <= i < count ==> s->minpv <= pv[i];
+      ensures ok_class_table: class_table(s);
       ensures ok_order_range: \forall integer id; 0 <= id < count ==> s->order[id] < count;
       ensures ok_perfect: s->perfect == perfect_of{Pre}(pv, count);
       ensures ok_perfect_ceil: s->perfect ==
@@ -349,6 +350,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     struct bsched_classes classes;
     uint32_t n;
     uint32_t maxpv;
+    uint32_t minpv;
+    uint32_t pvk;
     uint32_t perfect;
     uint32_t i;
 
@@ -375,29 +378,51 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     }
     /*@ ghost lemma_wait_form(pv, count); */
     maxpv = plan_classes(&classes, pv, count);
+    /* The class table of bsched_step, before place_processes moves the cursors. */
+    /*@ ghost lemma_first(pv, count); */
+    /*@ loop invariant 0 <= pvk <= BSCHED_MAX_PV + 1;
+        loop invariant table: \forall integer j; 0 <= j < pvk ==>
+            s->class_first[j] == class_first(pv, count, j) &&
+            s->class_size[j] == class_count(pv, count, j) &&
+            s->class_lead[j] == pow2(j) - class_start(pv, count, j);
+        loop assigns pvk, s->class_first[0 .. BSCHED_MAX_PV], s->class_size[0 .. BSCHED_MAX_PV],
+            s->class_lead[0 .. BSCHED_MAX_PV];
+        loop variant BSCHED_MAX_PV + 1 - pvk;
+    */
+    for (pvk = 0u; pvk <= BSCHED_MAX_PV; pvk++) {
+        /*@ assert first_bound: class_first(pv, count, pvk) <= count; */
+        s->class_first[pvk] = (uint16_t)classes.next[pvk];
+        s->class_size[pvk] = (uint16_t)classes.size[pvk];
+        s->class_lead[pvk] = period_of(pvk) - classes.cursor[pvk];
+    }
     place_processes(s, &classes, pv, count);
     perfect = perfect_load(&classes, pv, count);
+    minpv = maxpv;
     /*@ loop invariant 0 <= i <= n;
-        loop invariant \forall integer j; 0 <= j < i ==> s->wait[j] == s->offset[j];
         loop invariant \forall integer j; 0 <= j < i ==> s->pv[j] == pv[j];
+        loop invariant minpv_is_min: minpv <= maxpv && \forall integer j; 0 <= j < i ==> minpv <= pv[j];
         loop invariant offsets_kept: \forall integer j; 0 <= j < n ==>
             s->offset[j] == init_wait{Pre}(pv, count, j);
-        loop assigns i, s->wait[0 .. n - 1], s->pv[0 .. n - 1];
+        loop assigns i, minpv, s->pv[0 .. n - 1];
         loop variant n - i;
     */
     for (i = 0u; i < n; i++) {
         s->pv[i] = pv[i];
-        s->wait[i] = s->offset[i];
+        if (pv[i] < minpv) {
+            minpv = pv[i];
+        }
     }
     s->perfect = (uint16_t)perfect;
     s->count = (uint16_t)count;
     s->maxpv = (uint8_t)maxpv;
+    s->minpv = (uint8_t)minpv;
     s->cycle = 0u;
+    s->reversed = 0u;
     s->ran_count = 0u;
     /*@ assert wf_sizes: 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
             1 <= s->perfect <= s->count && s->cycle < pow2(s->maxpv); */
     /*@ assert wf_procs: \forall integer j; 0 <= j < s->count ==>
-            s->pv[j] <= s->maxpv && s->wait[j] < pow2(s->pv[j]) && s->offset[j] < pow2(s->pv[j]); */
+            s->pv[j] <= s->maxpv && s->offset[j] < pow2(s->pv[j]); */
     /*@ assert wf_order: \forall integer id; 0 <= id < s->count ==> s->order[id] < s->count; */
     /* s->pv is a copy of pv, so the class layout of s->pv is that of pv. */
     /*@ assert pv_copied: \forall integer j; 0 <= j < n ==> (&s->pv[0])[j] == \at(pv[j], Pre); */
@@ -457,6 +482,13 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
       }
     */
     /*@ assert same_perfect: perfect_of(&s->pv[0], count) == \at(perfect_of(pv, count), Pre); */
+    /*@ assert same_table: \forall integer k0; 0 <= k0 <= BSCHED_MAX_PV ==>
+            s->class_first[k0] == class_first(&s->pv[0], count, k0) &&
+            s->class_size[k0] == class_count(&s->pv[0], count, k0) &&
+            s->class_lead[k0] == pow2(k0) - class_start(&s->pv[0], count, k0); */
+    /*@ assert table: class_table(s); */
+    /*@ ghost lemma_rev_zero(); */
+    /*@ assert counter: s->reversed == rev(s->maxpv, s->cycle); */
     /*@ ghost lemma_scheduled(s); */
     /* perfect = ceil(U), U = sum_i 2^-pv_i (spec/bsched_fold.h). */
     /*@ ghost lemma_fold(&s->pv[0], count); */
@@ -470,79 +502,133 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     return BSCHED_OK;
 }
 
-/* Fig. 7, lines 5-12: run the processes whose wait is 0, in the order of
- * order[], at most `perfect` of them, and restart their waits. The contract
- * says the cap never bites when at most `perfect` waits are 0 (bsched_step
- * shows that from the balance theorem). */
-/*@ requires \valid(s);
-    requires sizes: 1 <= count <= BSCHED_MAX_PROCS && count == s->count && perfect <= count;
-    requires pv_range: \forall integer q; 0 <= q < count ==> s->pv[q] <= BSCHED_MAX_PV;
-    requires wait_range: \forall integer q; 0 <= q < count ==> s->wait[q] < pow2(s->pv[q]);
-    requires slots: \forall integer d; 0 <= d < count ==> s->order[d] < count;
-    requires distinct: \forall integer d, e; 0 <= d < e < count ==> s->order[d] != s->order[e];
-    requires onto: \forall integer q; 0 <= q < count ==>
-        0 <= sorted_pos(&s->pv[0], count, q) < count &&
-        s->order[sorted_pos(&s->pv[0], count, q)] == q;
-    requires enough: zero_slots(s, count) <= perfect;
-    assigns s->ran[0 .. BSCHED_MAX_PROCS - 1], s->wait[0 .. BSCHED_MAX_PROCS - 1];
-    ensures counted: \result == \old(zero_slots(s, count));
-    ensures ran_were_zero: \forall integer j; 0 <= j < \result ==>
-        s->ran[j] < count && \let q = (integer)s->ran[j]; \old(s->wait[q]) == 0;
-    ensures zeros_ran: \forall integer q; 0 <= q < count && \old(s->wait[q]) == 0 ==>
-        \exists integer j; 0 <= j < \result && s->ran[j] == q;
-    ensures restarted: \forall integer q; 0 <= q < count ==>
-        s->wait[q] == (\old(s->wait[q]) == 0 ? pow2(s->pv[q]) : \old(s->wait[q]));
+/* The processes due in minor cycle t, in execution order, into out[], from
+ * reversed = rev_maxpv(t): class by class upwards, member j of class k is due
+ * iff j == j0 (mod 2^k), j0 = (rev_k(t mod 2^k) + lead_k) mod 2^k, and
+ * rev_k(t mod 2^k) is the top k of the maxpv bits of `reversed`
+ * (spec/bsched_step.h). Returns how many: load(t), at most `perfect` (the
+ * balance theorem), so Fig. 7's cap is not needed. */
+/*@ requires valid: \valid_read(s) && \valid(out + (0 .. s->perfect - 1));
+    requires state: well_formed(s) && sorted_order(s) && closed_form(s) && class_table(s) &&
+        s->perfect == perfect_of(&s->pv[0], s->count);
+    requires separated: \separated(out + (0 .. s->perfect - 1), &s->count, &s->maxpv, &s->minpv,
+        &s->perfect, &s->pv[0 .. BSCHED_MAX_PROCS - 1], &s->offset[0 .. BSCHED_MAX_PROCS - 1],
+        &s->order[0 .. BSCHED_MAX_PROCS - 1], &s->class_first[0 .. BSCHED_MAX_PV],
+        &s->class_size[0 .. BSCHED_MAX_PV], &s->class_lead[0 .. BSCHED_MAX_PV]);
+    requires counter: reversed == rev(s->maxpv, t);
+    assigns out[0 .. s->perfect - 1];
+    ensures load: \result == load(&s->pv[0], s->count, t) == due_slots(s, t, s->count);
+    ensures bound: \result <= s->perfect;
+    ensures listed_due: \forall integer x; 0 <= x < \result ==>
+        out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+    ensures due_listed: \forall integer i; 0 <= i < s->count &&
+        t % pow2(s->pv[i]) == s->offset[i] ==> \exists integer x; 0 <= x < \result && out[x] == i;
 */
-static uint32_t run_due(struct bsched *s, uint32_t count, uint32_t perfect)
+static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t *out)
+    /*@ ghost (uint32_t t) */
 {
-    uint32_t done = 0u;
-    uint32_t id;
+    size_t done = 0u;
+    uint32_t maxpv = s->maxpv;
+    uint32_t k;
 
-    /*@ ghost lemma_zero_slots(s, count); */
-    /*@ loop invariant 0 <= id <= count;
-        loop invariant 0 <= done <= id && done <= perfect;
-        loop invariant counted: done == zero_slots{Pre}(s, id);
-        loop invariant order_kept: \forall integer d; 0 <= d < count ==> s->order[d] == \at(s->order[d], Pre);
-        loop invariant ran_were_zero: \forall integer j; 0 <= j < done ==>
-            s->ran[j] < count && \let q = (integer)s->ran[j]; \at(s->wait[q], Pre) == 0;
-        loop invariant zeros_ran: \forall integer d; 0 <= d < id && \at(s->wait[s->order[d]], Pre) == 0 ==>
-            \exists integer j; 0 <= j < done && s->ran[j] == s->order[d];
-        loop invariant visited: \forall integer d; 0 <= d < id ==>
-            s->wait[s->order[d]] == (\at(s->wait[s->order[d]], Pre) == 0 ?
-                pow2(s->pv[s->order[d]]) : \at(s->wait[s->order[d]], Pre));
-        loop invariant not_visited: \forall integer d; id <= d < count ==>
-            s->wait[s->order[d]] == \at(s->wait[s->order[d]], Pre);
-        loop assigns id, done, s->ran[0 .. BSCHED_MAX_PROCS - 1], s->wait[0 .. BSCHED_MAX_PROCS - 1];
-        loop variant count - id;
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_pow2_bound(); */
+    /*@ ghost lemma_count(s->pv, s->count); */
+    /*@ ghost lemma_first(s->pv, s->count); */
+    /*@ ghost step_first_bounds(s->pv, s->count, s->minpv, s->maxpv); */
+    /*@ ghost step_due_slots_mono((struct bsched *)s, t, s->count); */
+    /*@ ghost lemma_slots_all((struct bsched *)s, t); */
+    /*@ ghost lemma_slots_by_class((struct bsched *)s, t); */
+    /*@ ghost lemma_balance(s->pv, s->count, t); */
+    /*@ ghost lemma_fold(s->pv, s->count); */
+    /*@ ghost lemma_start_is_area(s->pv, s->count); */
+    /*@ ghost lemma_rev_top(); */
+    /*@ ghost lemma_rev_range(); */
+    /*@ ghost lemma_hits(); */
+    /*@ assert total: due_slots(s, t, s->count) == load(&s->pv[0], s->count, t) <= s->perfect; */
+    /*@ loop invariant k_range: s->minpv <= k <= maxpv + 1;
+        loop invariant counted: done == due_slots(s, t, class_first(&s->pv[0], s->count, k));
+        loop invariant listed_due: \forall integer x; 0 <= x < done ==>
+            out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+        loop invariant due_listed: \forall integer d; 0 <= d < class_first(&s->pv[0], s->count, k) &&
+            t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
+            \exists integer x; 0 <= x < done && out[x] == s->order[d];
+        loop assigns k, done, out[0 .. s->perfect - 1];
+        loop variant maxpv + 1 - k;
     */
-    for (id = 0u; id < count && done < perfect; id++) {
-        uint16_t p = s->order[id];
-        if (s->wait[p] == 0u) {
-            /*@ assert was_zero: p < count && \let q = (integer)p; \at(s->wait[q], Pre) == 0; */
-            s->ran[done] = p;
-            done++;
-            s->wait[p] = period_of(s->pv[p]);
-            /*@ assert ran_kept: \forall integer j; 0 <= j < done - 1 ==>
-                    s->ran[j] == \at(s->ran[j], LoopCurrent); */
-            /*@ assert ran_new: s->ran[done - 1] == p; */
+    for (k = s->minpv; k <= maxpv; k++) {
+        uint32_t period = period_of(k);
+        uint32_t top = reversed / period_of(maxpv - k);
+        size_t slot = (top + s->class_lead[k]) % period;
+        size_t size = s->class_size[k];
+        /*@ ghost
+          int64_t area = slots_area(s->pv, s->count, (int)k);
+          int64_t y = (int64_t)top;
+          int64_t j0 = (int64_t)slot;
+          int64_t q = area / (int64_t)period + 1 - (y + (int64_t)s->class_lead[k]) / (int64_t)period;
+          int64_t i = 0;
+          size_t done0 = done;
+        */
+        /*@ assert y_is: y == rev(k, t % pow2(k)) && 0 <= y < period; */
+        /*@ assert lead_is: s->class_lead[k] == period - area % period; */
+        /*@ ghost step_residue(period, area, y, s->class_lead[k], j0); */
+        /*@ ghost step_class_start(period, area, y, q, j0); */
+        /*@ ghost lemma_slots_class((struct bsched *)s, t, (int)k); */
+        /*@ assert class_range: class_first(&s->pv[0], s->count, k + 1) ==
+                s->class_first[k] + size <= s->count; */
+        /*@ assert class_hits: due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)) ==
+                done0 + ((area + size - y + period - 1) / period - q); */
+        /*@ assert room: done0 + ((area + size - y + period - 1) / period - q) <= s->perfect; */
+
+        if (slot < size) {
+            size_t end = s->class_first[k] + size;
+            slot += s->class_first[k];
+            /*@ loop invariant walk: slot == s->class_first[k] + (j0 + i * period) && 0 <= i;
+                loop invariant walk_lt: slot < end;
+                loop invariant done_walk: done == done0 + i;
+                loop invariant walk_in: i == 0 || j0 + (i - 1) * period < size;
+                loop invariant walk_room: q + i <= (area + size - y + period - 1) / period;
+                loop invariant walk_listed: \forall integer m; 0 <= m < i ==>
+                    out[done0 + m] == s->order[s->class_first[k] + (j0 + m * period)];
+                loop invariant listed_due: \forall integer x; 0 <= x < done ==>
+                    out[x] < s->count && t % pow2(s->pv[out[x]]) == s->offset[out[x]];
+                loop invariant kept: \forall integer x; 0 <= x < done0 ==> out[x] == \at(out[x], LoopEntry);
+                loop assigns slot, done, i, out[0 .. s->perfect - 1];
+                loop variant end - slot;
+            */
+            do {
+                /*@ ghost step_class_more(period, area, y, q, j0, i, size); */
+                /*@ ghost step_due_member(period, area, y, q, j0, i); */
+                /*@ ghost lemma_slots_slot((struct bsched *)s, t, (uint32_t)slot); */
+                out[done] = s->order[slot];
+                done++;
+                slot += period;
+                /*@ ghost i = i + 1; */
+            } while (slot < end); /* at most class_size[k] runs */
         }
+        /*@ ghost step_class_count(period, area, y, q, j0, i, size); */
+        /*@ ghost step_member_index(period, area, y, q, j0, i, size); */
+        /*@ assert class_counted: done == due_slots(s, t, class_first(&s->pv[0], s->count, k + 1)); */
+        /*@ assert class_index: \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
+                class_first(&s->pv[0], s->count, k + 1) &&
+                t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
+                0 <= (area + (d - s->class_first[k])) / period - q < i &&
+                out[done0 + ((area + (d - s->class_first[k])) / period - q)] == s->order[d]; */
+        /*@ assert class_listed: \forall integer d; class_first(&s->pv[0], s->count, k) <= d <
+                class_first(&s->pv[0], s->count, k + 1) &&
+                t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] ==>
+                \exists integer x; 0 <= x < done && out[x] == s->order[d]; */
     }
-    /* Stopped early only with `perfect` runs, when no 0 is left. */
-    /*@ assert rest_nonzero: \forall integer d; id <= d < count ==>
-            \at(s->wait[s->order[d]], Pre) != 0; */
-    /*@ assert every_slot: \forall integer q; 0 <= q < count ==>
-            (sorted_pos(&s->pv[0], count, q) < id &&
-             s->wait[q] == (\at(s->wait[q], Pre) == 0 ? pow2(s->pv[q]) : \at(s->wait[q], Pre)) &&
-             (\at(s->wait[q], Pre) == 0 ==> \exists integer j; 0 <= j < done && s->ran[j] == q)) ||
-            (sorted_pos(&s->pv[0], count, q) >= id && \at(s->wait[q], Pre) != 0 &&
-             s->wait[q] == \at(s->wait[q], Pre)); */
-    return done;
+    /*@ assert all_slots: class_first(&s->pv[0], s->count, maxpv + 1) == s->count; */
+    /*@ assert all_procs: \forall integer i; 0 <= i < s->count ==>
+            0 <= sorted_pos(&s->pv[0], s->count, i) < s->count &&
+            s->order[sorted_pos(&s->pv[0], s->count, i)] == i; */
+    return (uint32_t)done;
 }
 
 /*@ requires valid_state: s == \null || \valid(s);
     requires from_init: s != \null && plausible(s) ==> scheduled(s);
-    assigns s->wait[0 .. BSCHED_MAX_PROCS - 1], s->ran[0 .. BSCHED_MAX_PROCS - 1],
-            s->ran_count, s->cycle;
+    assigns s->ran[0 .. BSCHED_MAX_PROCS - 1], s->ran_count, s->cycle, s->reversed;
 
     behavior null:
       assumes s == \null;
@@ -556,10 +642,12 @@ static uint32_t run_due(struct bsched *s, uint32_t count, uint32_t perfect)
       assumes s != \null && plausible(s);
       ensures ok_count: 0 <= \result <= s->perfect && \result == s->ran_count;
       ensures ok_well_formed: well_formed(s);
-      ensures ok_in_phase: in_phase(s);
       ensures ok_sorted: sorted_order(s);
       ensures ok_closed: closed_form(s);
       ensures ok_perfect: s->perfect == perfect_of(&s->pv[0], s->count);
+      ensures ok_class_table: class_table(s);
+      ensures ok_reversed: s->reversed == rev(s->maxpv, s->cycle);
+      ensures ok_scheduled: scheduled(s);
       ensures ok_cycle: s->cycle == (\old(s->cycle) + 1) % pow2(s->maxpv);
       ensures ok_ran_range: \forall integer j; 0 <= j < \result ==> 0 <= s->ran[j] < s->count;
       ensures ok_periodic: \forall integer i; 0 <= i < s->count ==>
@@ -572,9 +660,8 @@ static uint32_t run_due(struct bsched *s, uint32_t count, uint32_t perfect)
 int32_t bsched_step(struct bsched *s)
 {
     uint32_t done;
-    uint32_t i;
-    uint32_t count;
-    uint32_t perfect;
+    uint32_t reversed;
+    uint32_t bit;
 
     if (s == NULL) {
         return BSCHED_ERR_NULL;
@@ -582,82 +669,48 @@ int32_t bsched_step(struct bsched *s)
     if (!plausible_state(s)) {
         return BSCHED_ERR_STATE;
     }
-    count = s->count;
-    perfect = s->perfect;
+    reversed = s->reversed;
     /*@ ghost uint32_t t = s->cycle; */
-    /*@ ghost uint32_t g; */
-    /* In phase, a wait is 0 exactly when its process is due in cycle t. */
-    /*@ ghost
-      /@ loop invariant 0 <= g <= count;
-         loop invariant due_is_zero: \forall integer q; 0 <= q < g ==>
-             (s->wait[q] == 0 <==> t % pow2(s->pv[q]) == s->offset[q]);
-         loop assigns g;
-         loop variant count - g;
-      @/
-      for (g = 0u; g < count; g++) {
-        lemma_due_iff_zero(t, s->wait[g], s->offset[g], s->pv[g]);
-      }
-    */
-    /*@ ghost
-      /@ loop invariant 0 <= g <= count;
-         loop invariant zeros_are_due: zero_slots(s, g) == due_slots(s, t, g);
-         loop assigns g;
-         loop variant count - g;
-      @/
-      for (g = 0u; g < count; g++) {
-      }
-    */
-    /* The balance theorem for this cycle: at most `perfect` processes are due
-     * (spec/bsched_slots.h, bsched_balance.h, bsched_fold.h), so the cap of
-     * run_due never defers one. */
-    /*@ ghost lemma_slots_by_class(s, t); */
-    /*@ ghost lemma_balance(&s->pv[0], count, t); */
-    /*@ ghost lemma_fold(&s->pv[0], count); */
-    /*@ assert load_bound: zero_slots(s, count) == due_slots(s, t, count) <= perfect; */
-    /*@ assert distinct: \forall integer d, e; 0 <= d < e < count ==> s->order[d] != s->order[e]; */
-    done = run_due(s, count, perfect);
-    /*@ assert ran_due: \forall integer j; 0 <= j < done ==>
-            s->ran[j] < count && \let q = (integer)s->ran[j]; \at(s->wait[q], Pre) == 0; */
-    /*@ assert offsets_same: \forall integer q; 0 <= q < count ==> s->offset[q] == \at(s->offset[q], Pre); */
-    /*@ assert due_ran: \forall integer q; 0 <= q < count && \at(s->wait[q], Pre) == 0 ==>
-            \exists integer j; 0 <= j < done && s->ran[j] == q; */
-    /*@ assert ran_due_now: \forall integer j; 0 <= j < done ==>
-            s->ran[j] < count && t % pow2(s->pv[s->ran[j]]) == s->offset[s->ran[j]]; */
-    /*@ assert periodic_only: \forall integer q; 0 <= q < count ==>
-            (\exists integer j; 0 <= j < done && s->ran[j] == q) ==> t % pow2(s->pv[q]) == s->offset[q]; */
-    /*@ assert periodic_all: \forall integer q; 0 <= q < count ==>
-            t % pow2(s->pv[q]) == s->offset[q] ==> \exists integer j; 0 <= j < done && s->ran[j] == q; */
-    /*@ assert order_same: \forall integer d; 0 <= d < count ==> s->order[d] == \at(s->order[d], Pre); */
-    /*@ assert waits_positive: \forall integer q; 0 <= q < count ==> 1 <= s->wait[q] <= pow2(s->pv[q]); */
-    /* Fig. 7, line 13: every positive wait counts down one cycle (after
-     * run_due every wait is positive). */
-    /*@ loop invariant 0 <= i <= count;
-        loop invariant counted_down: \forall integer q; 0 <= q < i ==>
-            s->wait[q] == \at(s->wait[q], LoopEntry) - 1;
-        loop invariant not_yet: \forall integer q; i <= q < count ==>
-            s->wait[q] == \at(s->wait[q], LoopEntry);
-        loop assigns i, s->wait[0 .. BSCHED_MAX_PROCS - 1];
-        loop variant count - i;
-    */
-    for (i = 0u; i < count; i++) {
-        if (s->wait[i] > 0u) {
-            s->wait[i]--;
-        }
-    }
-    /*@ assert next_waits: \forall integer q; 0 <= q < count ==>
-            s->wait[q] == (\at(s->wait[q], Pre) == 0 ? pow2(s->pv[q]) - 1 : \at(s->wait[q], Pre) - 1); */
+    done = collect_due(s, reversed, s->ran) /*@ ghost (t) */;
+    /*@ ghost lemma_balance(s->pv, s->count, t); */
     s->ran_count = (uint16_t)done;
     s->cycle = (s->cycle + 1u) % period_of(s->maxpv);
-    /*@ assert next_phase: \forall integer q; 0 <= q < count ==>
-            (s->wait[q] + 1 == pow2(s->pv[q]) && t % pow2(s->pv[q]) == s->offset[q]) ||
-            (t + s->wait[q] + 1) % pow2(s->pv[q]) == s->offset[q]; */
-    /*@ ghost lemma_next_phase(s, t); */
-    /*@ assert order_final: \forall integer d; 0 <= d < count ==> s->order[d] == \at(s->order[d], Pre); */
-    /*@ assert sorted_slots_final: \forall integer d; 0 <= d < count ==>
-            s->order[d] < count && sorted_pos(&s->pv[0], count, s->order[d]) == d; */
-    /*@ assert sorted_procs_final: \forall integer q; 0 <= q < count ==>
-            0 <= sorted_pos(&s->pv[0], count, q) < count &&
-            s->order[sorted_pos(&s->pv[0], count, q)] == q; */
+    /* rev(t + 1) from rev(t): add 1 at the top bit of the reversed counter and
+     * carry downwards (bit is 0 after the last carry only when t + 1 wraps). */
+    bit = period_of(s->maxpv) / 2u;
+    /*@ ghost
+      int e = s->maxpv;
+      uint64_t u = t;
+      lemma_rev_range();
+      lemma_rev_zero();
+      lemma_pow2(BSCHED_MAX_PV);
+    */
+    /*@ loop invariant e_range: 0 <= e <= s->maxpv;
+        loop invariant bit_is: (e >= 1 ==> bit == pow2(e - 1)) && (e == 0 ==> bit == 0);
+        loop invariant low: reversed == rev(e, u) && 0 <= u;
+        loop invariant goal: rev(s->maxpv, t + 1) == rev(e, u + 1);
+        loop assigns reversed, bit, e, u;
+        loop variant bit;
+    */
+    while (bit != 0u && reversed >= bit) { /* at most maxpv carries */
+        /*@ ghost lemma_rev_carry(e, u); */
+        reversed -= bit;
+        bit /= 2u;
+        /*@ ghost
+          u = u / 2;
+          e = e - 1;
+        */
+    }
+    /*@ ghost
+      if (e >= 1) {
+        lemma_rev_carry(e, u);
+      }
+    */
+    /*@ assert next_reversed: reversed + bit == rev(s->maxpv, t + 1); */
+    /*@ ghost rev_mod_inv(); */
+    /*@ assert next_mod: rev(s->maxpv, t + 1) == rev(s->maxpv, (t + 1) % pow2(s->maxpv)); */
+    s->reversed = reversed + bit;
+    /*@ ghost lemma_scheduled(s); */
     return (int32_t)done;
 }
 
@@ -679,7 +732,7 @@ int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
 }
 
 /*@ requires valid_state: s == \null || \valid_read(s);
-    requires from_init: s != \null && plausible(s) ==> well_formed(s);
+    requires from_init: s != \null && plausible(s) ==> scheduled(s);
     requires valid_due: due == \null || (s != \null && plausible(s) ==> \valid(due + (0 .. s->perfect - 1)));
     requires separated: s != \null && due != \null && plausible(s) ==>
         \separated(s, due + (0 .. s->perfect - 1));
@@ -697,16 +750,18 @@ int32_t bsched_run_cycle(struct bsched *s, bsched_process_fn run, void *context)
       assumes s != \null && due != \null && plausible(s);
       assigns due[0 .. s->perfect - 1];
       ensures ok_count: 0 <= \result <= s->perfect;
+      ensures ok_load: \result == load(&s->pv[0], s->count, (s->cycle + ahead) % pow2(s->maxpv));
       ensures ok_due_range: \forall integer j; 0 <= j < \result ==> 0 <= due[j] < s->count;
+      ensures ok_due_exact: \forall integer i; 0 <= i < s->count ==>
+          ((\exists integer j; 0 <= j < \result && due[j] == i) <==>
+           ((s->cycle + ahead) % pow2(s->maxpv)) % pow2(s->pv[i]) == s->offset[i]);
     complete behaviors;
     disjoint behaviors;
 */
 int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
 {
-    uint32_t done = 0u;
-    uint32_t id;
-    uint32_t count;
-    uint32_t perfect;
+    uint32_t period;
+    uint32_t t;
 
     if (s == NULL || due == NULL) {
         return BSCHED_ERR_NULL;
@@ -714,23 +769,53 @@ int32_t bsched_due(const struct bsched *s, uint32_t ahead, uint16_t *due)
     if (!plausible_state(s)) {
         return BSCHED_ERR_STATE;
     }
-    count = s->count;
-    perfect = s->perfect;
-    /* wait < 2^pv always, so p is due `ahead` cycles on iff wait == ahead mod 2^pv. */
-    /*@ loop invariant 0 <= id <= count;
-        loop invariant 0 <= done <= id && done <= perfect;
-        loop invariant \forall integer j; 0 <= j < done ==> 0 <= due[j] < count;
-        loop invariant \forall integer d; 0 <= d < count ==>
-            s->order[d] == \at(s->order[d], Pre) && s->pv[s->order[d]] == \at(s->pv[s->order[d]], Pre);
-        loop assigns id, done, due[0 .. perfect - 1];
-        loop variant count - id;
-    */
-    for (id = 0u; id < count && done < perfect; id++) {
-        uint16_t p = s->order[id];
-        if (s->wait[p] == ahead % period_of(s->pv[p])) {
-            due[done] = p;
-            done++;
-        }
+    period = period_of(s->maxpv);
+    /* Both terms are below 2^31: no wrap. */
+    t = (s->cycle + ahead % period) % period;
+    /*@ ghost step_mod_add(s->cycle, ahead, period); */
+    /*@ assert t_is: t == (s->cycle + ahead) % pow2(s->maxpv) < pow2(s->maxpv); */
+    return (int32_t)collect_due(s, reverse_bits(t, s->maxpv), due) /*@ ghost (t) */;
+}
+
+/*@ requires valid_state: s == \null || \valid_read(s);
+    requires from_init: s != \null && plausible(s) ==> well_formed(s);
+    assigns \nothing;
+
+    behavior null:
+      assumes s == \null;
+      ensures \result == BSCHED_ERR_NULL;
+    behavior bad_state:
+      assumes s != \null && !plausible(s);
+      ensures \result == BSCHED_ERR_STATE;
+    behavior bad_index:
+      assumes s != \null && plausible(s) && i >= s->count;
+      ensures \result == BSCHED_ERR_INDEX;
+    behavior ok:
+      assumes s != \null && plausible(s) && i < s->count;
+      ensures ok_range: 0 <= \result < pow2(s->pv[i]);
+      ensures ok_phase: (s->cycle + \result) % pow2(s->pv[i]) == s->offset[i];
+      ensures ok_due: \result == 0 <==> s->cycle % pow2(s->pv[i]) == s->offset[i];
+    complete behaviors;
+    disjoint behaviors;
+*/
+int32_t bsched_wait(const struct bsched *s, uint16_t i)
+{
+    uint32_t period;
+    uint32_t wait;
+
+    if (s == NULL) {
+        return BSCHED_ERR_NULL;
     }
-    return (int32_t)done;
+    if (!plausible_state(s)) {
+        return BSCHED_ERR_STATE;
+    }
+    if (i >= s->count) {
+        return BSCHED_ERR_INDEX;
+    }
+    period = period_of(s->pv[i]);
+    /* (offset - cycle) mod 2^pv without an unsigned wrap: offset < 2^pv <= 2^31. */
+    wait = (s->offset[i] + period - s->cycle % period) % period;
+    /*@ ghost step_wait(period, s->offset[i], s->cycle, wait); */
+    /*@ ghost lemma_phase_due(period, s->cycle, wait, s->offset[i]); */
+    return (int32_t)wait;
 }

@@ -208,7 +208,7 @@ static void pdl_plan_record(void)
     }
     pdl_plan_start[cycles] = (uint16_t)n;
     if (t == cycles && pdl_sched.cycle == 0u) {
-        for (i = 0; i < pdl_sched.count && pdl_sched.wait[i] == pdl_sched.offset[i]; i++)
+        for (i = 0; i < pdl_sched.count && bsched_wait(&pdl_sched, i) == (int32_t)pdl_sched.offset[i]; i++)
             ;
         if (i == pdl_sched.count) {
             pdl_plan_mask = cycles - 1u;

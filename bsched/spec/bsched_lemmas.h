@@ -188,8 +188,9 @@
   }
 */
 
-/* The three facts bsched_step needs about residues, stated for periods
- * 2^k given by their exponent, so that its ghost code passes plain C values. */
+/* Facts about residues for periods 2^k given by their exponent, so that
+ * ghost code passes plain C values (lemma_due_iff_zero: Fig. 7's wait is 0
+ * exactly in the cycles t = offset mod 2^k, for the reference engine). */
 /*@ ghost
   /@ requires 0 <= k <= BSCHED_MAX_PV && w < pow2(k) && o < pow2(k);
      requires (t + w) % pow2(k) == o;
@@ -239,69 +240,15 @@
   }
 */
 
-/*@ ghost
-  /@ requires \valid_read(s) && 0 <= n <= BSCHED_MAX_PROCS;
-     assigns \nothing;
-     ensures zero_monotone: \forall integer a, b; 0 <= a <= b <= n ==>
-         zero_slots(s, a) <= zero_slots(s, b);
-     ensures zero_strict: \forall integer a, d; 0 <= a <= d < n && s->wait[s->order[d]] == 0 ==>
-         zero_slots(s, a) < zero_slots(s, n);
-  @/
-  void lemma_zero_slots(struct bsched *s, uint32_t n)
-  {
-    uint32_t x = 0;
-    /@ loop invariant 0 <= x <= n;
-       loop invariant \forall integer a, b; 0 <= a <= b <= x ==>
-           zero_slots(s, a) <= zero_slots(s, b);
-       loop invariant \forall integer a, d; 0 <= a <= d < x && s->wait[s->order[d]] == 0 ==>
-           zero_slots(s, a) < zero_slots(s, x);
-       loop assigns x;
-       loop variant n - x;
-    @/
-    while (x < n) {
-      x = x + 1;
-    }
-  }
-*/
-
-/* Back in phase for cycle t + 1 after a step: a process that ran restarts a
- * full period (t + 2^pv == t mod 2^pv), the others counted down by one; the
- * cycle counter wraps at 2^maxpv, a multiple of every period. */
-/*@ ghost
-  /@ requires \valid_read(s) && 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV;
-     requires \forall integer q; 0 <= q < s->count ==> s->pv[q] <= s->maxpv;
-     requires \forall integer q; 0 <= q < s->count ==> s->wait[q] < pow2(s->pv[q]);
-     requires t + 1 <= pow2(s->maxpv) && s->cycle == (t + 1) % pow2(s->maxpv);
-     requires \forall integer q; 0 <= q < s->count ==>
-         (s->wait[q] + 1 == pow2(s->pv[q]) && t % pow2(s->pv[q]) == s->offset[q]) ||
-         (t + s->wait[q] + 1) % pow2(s->pv[q]) == s->offset[q];
-     assigns \nothing;
-     ensures in_phase: in_phase(s);
-  @/
-  void lemma_next_phase(struct bsched *s, uint32_t t)
-  {
-    uint32_t g;
-    /@ loop invariant 0 <= g <= s->count;
-       loop invariant \forall integer r; 0 <= r < g ==>
-           (s->cycle + s->wait[r]) % pow2(s->pv[r]) == s->offset[r];
-       loop assigns g;
-       loop variant s->count - g;
-    @/
-    for (g = 0u; g < s->count; g++) {
-      lemma_full_period(t, s->pv[g]);
-      lemma_wrap_pow2(s->cycle, s->wait[g], t, s->pv[g], s->maxpv);
-    }
-  }
-*/
-
 /* The parts of scheduled(s), one goal each where this is called. */
 /*@ ghost
   /@ requires \valid_read(s);
      requires part_well_formed: well_formed(s);
-     requires part_in_phase: in_phase(s);
      requires part_sorted: sorted_order(s);
      requires part_closed: closed_form(s);
      requires part_perfect: s->perfect == perfect_of(&s->pv[0], s->count);
+     requires part_class_table: class_table(s);
+     requires part_reversed: s->reversed == rev(s->maxpv, s->cycle);
      assigns \nothing;
      ensures scheduled: scheduled(s);
   @/

@@ -121,24 +121,15 @@
   // ---- The scheduler state ----
 
   // What bsched_init establishes and bsched_step keeps: sizes and ranges that
-  // make every access of bsched_step and bsched_due safe, waits below their
-  // period, offsets below their period, and order[] a map into the processes
-  // into the processes.
+  // make every access of bsched_step, bsched_due and bsched_wait safe, offsets
+  // below their period, and order[] a map into the processes.
   predicate well_formed{L}(struct bsched *s) =
       1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
       1 <= s->perfect && s->perfect <= s->count &&
       s->cycle < pow2(s->maxpv) &&
       (\forall integer i; 0 <= i < s->count ==>
-           s->pv[i] <= s->maxpv && s->wait[i] < pow2(s->pv[i]) &&
-           s->offset[i] < pow2(s->pv[i])) &&
+           s->pv[i] <= s->maxpv && s->offset[i] < pow2(s->pv[i])) &&
       (\forall integer id; 0 <= id < s->count ==> s->order[id] < s->count);
-
-  // The periodicity invariant of the hand proof, at the start of minor cycle
-  // t = s->cycle: wait_i = (offset_i - t) mod 2^pv_i, i.e. process i is due
-  // (wait 0) exactly when t = offset_i (mod 2^pv_i).
-  predicate in_phase{L}(struct bsched *s) =
-      \forall integer i; 0 <= i < s->count ==>
-          (s->cycle + s->wait[i]) % pow2(s->pv[i]) == s->offset[i];
 
   // order[] is the stable sort by priority value: slot d holds the process
   // whose sorted position is d, and every process sits at its sorted position.
@@ -161,15 +152,24 @@
              : due_slots{L}(s, t, d - 1) +
                (t % pow2(s->pv[s->order[d - 1]]) == s->offset[s->order[d - 1]] ? 1 : 0);
 
-  // How many of the slots order[0 .. d-1] hold a process whose wait is 0.
-  logic integer zero_slots{L}(struct bsched *s, integer d) =
-      d <= 0 ? 0 : zero_slots{L}(s, d - 1) + (s->wait[s->order[d - 1]] == 0 ? 1 : 0);
+  // The class table of bsched_step: class k occupies the slots class_first[k] ..
+  // class_first[k] + class_size[k] - 1 of order[], and class_lead[k] = 2^k - s_k;
+  // every class in use lies between minpv and maxpv.
+  predicate class_table{L}(struct bsched *s) =
+      s->minpv <= s->maxpv &&
+      (\forall integer i; 0 <= i < s->count ==> s->minpv <= s->pv[i]) &&
+      (\forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
+           s->class_first[k] == class_first{L}(&s->pv[0], s->count, k) &&
+           s->class_size[k] == class_count{L}(&s->pv[0], s->count, k) &&
+           s->class_lead[k] == pow2(k) - class_start{L}(&s->pv[0], s->count, k));
 
   // Everything bsched_init establishes and bsched_step keeps: the state is well
-  // formed, in phase, sorted and in closed form, and perfect is the fold.
+  // formed, sorted and in closed form, perfect is the fold, the class table
+  // describes order[], and `reversed` is the bit-reversed cycle counter.
   predicate scheduled{L}(struct bsched *s) =
-      well_formed(s) && in_phase(s) && sorted_order(s) && closed_form(s) &&
-      s->perfect == perfect_of{L}(&s->pv[0], s->count);
+      well_formed(s) && sorted_order(s) && closed_form(s) &&
+      s->perfect == perfect_of{L}(&s->pv[0], s->count) &&
+      class_table(s) && s->reversed == rev(s->maxpv, s->cycle);
 
   // Process i ran in the last step.
   predicate ran_last{L}(struct bsched *s, integer i) =

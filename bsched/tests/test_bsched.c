@@ -5,6 +5,7 @@
  * paper's pseudo-code: classes are walked by scanning the input for each pv
  * (no sort), bit reversal goes through an array of bits, and due sets come
  * from the closed form t = w (mod 2^pv), not from counting waits down.
+ * Fig. 7's waits (bsched_wait) are checked against the model's (w - t) mod 2^pv.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -27,6 +28,9 @@ struct model {
     uint32_t wait[BSCHED_MAX_PROCS];
     uint16_t order[BSCHED_MAX_PROCS];
     uint64_t area; /* U * 2^maxpv = sum 2^(maxpv - pv) */
+    unsigned minpv;
+    uint64_t start[BSCHED_MAX_PV + 1]; /* s_k of Fig. 6, for the classes up to maxpv */
+    size_t first[BSCHED_MAX_PV + 1], size[BSCHED_MAX_PV + 1];
 };
 
 static uint32_t model_reverse(uint32_t x, unsigned bits)
@@ -51,10 +55,14 @@ static void model_plan(struct model *m, const uint8_t *pv, size_t n)
 
     memset(m, 0, sizeof *m);
     m->n = n;
+    m->minpv = BSCHED_MAX_PV;
     for (i = 0; i < n; i++) {
         m->pv[i] = pv[i];
         if (pv[i] > m->maxpv) {
             m->maxpv = pv[i];
+        }
+        if (pv[i] < m->minpv) {
+            m->minpv = pv[i];
         }
     }
     for (k = 0; k <= m->maxpv; k++) {
@@ -63,10 +71,13 @@ static void model_plan(struct model *m, const uint8_t *pv, size_t n)
             start *= 2;
             slots *= 2;
         }
+        m->start[k] = start;
+        m->first[k] = pos;
         for (i = 0; i < n; i++) {
             if (pv[i] != k) {
                 continue;
             }
+            m->size[k]++;
             m->order[pos++] = (uint16_t)i;
             m->wait[i] = k == 0 ? 0 : model_reverse((uint32_t)((start + members) % slots), k);
             members++;
@@ -83,6 +94,13 @@ static void model_plan(struct model *m, const uint8_t *pv, size_t n)
 static int model_due(const struct model *m, size_t i, uint64_t t)
 {
     return (t % ((uint64_t)1 << m->pv[i])) == m->wait[i];
+}
+
+/* Fig. 7's count-down at the start of cycle t: the cycles until i next runs. */
+static uint32_t model_wait_at(const struct model *m, size_t i, uint64_t t)
+{
+    uint64_t period = (uint64_t)1 << m->pv[i];
+    return (uint32_t)((m->wait[i] + period - t % period) % period);
 }
 
 static unsigned model_ceil_u(const struct model *m)
@@ -112,7 +130,8 @@ static void check_against_model(const uint8_t *pv, size_t n)
     struct model m;
     uint64_t cycles, t, heavy = 0;
     size_t i;
-    uint32_t initial_wait[BSCHED_MAX_PROCS];
+    unsigned c;
+    static struct bsched initial;
     uint16_t predicted[BSCHED_MAX_PROCS];
 
     model_plan(&m, pv, n);
@@ -123,18 +142,40 @@ static void check_against_model(const uint8_t *pv, size_t n)
     assert_int_equal(sched.cycle, 0);
     for (i = 0; i < n; i++) {
         assert_int_equal(sched.offset[i], m.wait[i]);
-        assert_int_equal(sched.wait[i], m.wait[i]);
+        assert_int_equal(bsched_wait(&sched, (uint16_t)i), m.wait[i]);
         assert_int_equal(sched.order[i], m.order[i]);
         assert_int_equal(sched.pv[i], pv[i]);
         assert_true(sched.offset[i] < ((uint64_t)1 << pv[i]));
     }
-    memcpy(initial_wait, sched.wait, n * sizeof initial_wait[0]);
+    assert_int_equal(bsched_wait(&sched, (uint16_t)n), BSCHED_ERR_INDEX);
+    /* The class table: where each class sits in order[], and 2^k - s_k. */
+    assert_int_equal(sched.minpv, m.minpv);
+    assert_int_equal(sched.reversed, 0);
+    for (c = 0; c <= m.maxpv; c++) {
+        assert_int_equal(sched.class_size[c], m.size[c]);
+        if (m.size[c] != 0) {
+            assert_int_equal(sched.class_first[c], m.first[c]);
+            assert_int_equal(sched.class_lead[c], ((uint64_t)1 << c) - m.start[c]);
+        }
+    }
+    for (; c <= BSCHED_MAX_PV; c++) {
+        assert_int_equal(sched.class_size[c], 0);
+    }
+    initial = sched;
 
     cycles = (uint64_t)1 << m.maxpv;
     for (t = 0; t < cycles + 3; t++) {
-        int32_t npred = bsched_due(&sched, 0, predicted);
-        int32_t ran = bsched_step(&sched);
+        int32_t npred, ran;
         size_t expected = 0, k;
+        /* The bit-reversed counter is rev_maxpv of the cycle, and every wait is
+         * Fig. 7's count-down. */
+        assert_int_equal(sched.cycle, t % cycles);
+        assert_int_equal(sched.reversed, model_reverse((uint32_t)(t % cycles), m.maxpv));
+        for (k = 0; k < n; k++) {
+            assert_int_equal(bsched_wait(&sched, (uint16_t)k), model_wait_at(&m, k, t));
+        }
+        npred = bsched_due(&sched, 0, predicted);
+        ran = bsched_step(&sched);
         assert_true(ran >= 0);
         assert_int_equal(npred, ran);
         assert_int_equal(sched.ran_count, ran);
@@ -157,7 +198,10 @@ static void check_against_model(const uint8_t *pv, size_t n)
         if (t + 1 == cycles) {
             /* A major cycle later the schedule is where it began. */
             assert_int_equal(sched.cycle, 0);
-            assert_memory_equal(sched.wait, initial_wait, n * sizeof initial_wait[0]);
+            assert_int_equal(sched.reversed, 0);
+            initial.ran_count = sched.ran_count;
+            memcpy(initial.ran, sched.ran, sizeof initial.ran);
+            assert_memory_equal(&sched, &initial, sizeof initial);
         }
     }
     assert_int_equal(heavy, m.area % cycles);
@@ -375,12 +419,17 @@ static void test_step_and_due_errors(void **state)
     assert_int_equal(bsched_due(NULL, 0, due), BSCHED_ERR_NULL);
     assert_int_equal(bsched_due(&zero, 0, due), BSCHED_ERR_STATE);
     assert_int_equal(bsched_run_cycle(&zero, record_call, due), BSCHED_ERR_STATE);
+    assert_int_equal(bsched_wait(NULL, 0), BSCHED_ERR_NULL);
+    assert_int_equal(bsched_wait(&zero, 0), BSCHED_ERR_STATE);
     assert_memory_equal(&zero, &before, sizeof before);
     plan(table1_pv, 9);
     before = sched;
     assert_int_equal(bsched_due(&sched, 0, NULL), BSCHED_ERR_NULL);
     assert_int_equal(bsched_run_cycle(&sched, NULL, NULL), BSCHED_ERR_NULL);
     assert_int_equal(bsched_run_cycle(NULL, record_call, due), BSCHED_ERR_NULL);
+    assert_int_equal(bsched_wait(&sched, 9), BSCHED_ERR_INDEX);
+    assert_int_equal(bsched_wait(&sched, 65535), BSCHED_ERR_INDEX);
+    assert_int_equal(bsched_wait(&sched, 8), 2); /* p4.3 runs in cycle 2 */
     assert_memory_equal(&sched, &before, sizeof before);
 }
 

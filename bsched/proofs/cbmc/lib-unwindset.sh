@@ -5,6 +5,7 @@
 # instead of hard-coding them each loop is bounded by what its header line
 # iterates over (the loop header is read from the source line CBMC reports):
 #   BSCHED_MAX_PV  priority classes           -> 32 iterations
+#   minpv          classes minpv..maxpv <= P  -> P + 1
 #   maxpv, bits    priority values <= P       -> P
 #   count, n, class_size, ran  processes <= N -> N
 # (CBMC's bound is iterations + 1.) A loop matching none of these stops the run
@@ -17,6 +18,8 @@ while read -r loop file line; do
     text=$(sed -n "${line}p" "$file")
     if [[ $text =~ BSCHED_MAX_PV ]]; then
         bound=33
+    elif [[ $text =~ (^|[^A-Za-z0-9_])minpv([^A-Za-z0-9_]|$) ]]; then
+        bound=$((p + 2))
     elif [[ $text =~ (^|[^A-Za-z0-9_])(maxpv|bits)([^A-Za-z0-9_]|$) ]]; then
         bound=$((p + 1))
     elif [[ $text =~ (^|[^A-Za-z0-9_])(count|n|class_size|ran)([^A-Za-z0-9_]|$) ]]; then

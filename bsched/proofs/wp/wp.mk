@@ -6,7 +6,7 @@
 
 WP_DIR      := $(BUILD)/wp
 WP_SPEC     := $(addprefix bsched/spec/,bsched_logic.h bsched_lemmas.h bsched_order.h \
-               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h)
+               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h)
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
 # WP starts the provers side by side on each goal and keeps the first proof (measured
 # 2026-11-21, 1746 goals: Qed 1039, CVC4 380, CVC5 189, Z3 with bounded instantiation
@@ -36,7 +36,7 @@ WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 # thread, so one process would leave a core idle much of the time. Part A takes the library's code behind bsched_init and bsched_step; part B
 # everything else (bsched_due and the lemma functions), so a new function always
 # lands in B and none is left out.
-WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,run_due
+WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,collect_due
 WP_RUNS      = $(if $(WP_FCT),all,a b ref)
 WP_SEL_all   = -wp-fct $(WP_FCT) -wp-par $(WP_PAR)
 WP_SEL_a     = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)

@@ -4,8 +4,9 @@
  *
  * Checks, besides memory safety and the absence of undefined behaviour
  * (property flags in ../Makefile.common), in three parts:
- *   state:   it succeeds and fills count, maxpv, pv[], cycle = 0, ran_count = 0;
- *            waits start at the offsets, and every offset is below 2^pv;
+ *   state:   it succeeds and fills count, maxpv, minpv, pv[], cycle = 0,
+ *            reversed = 0, ran_count = 0, class_size[k] = #{i : pv_i == k};
+ *            every offset is below 2^pv;
  *            order[] lists every process once, stably sorted by ascending pv;
  *   perfect: perfect = ceil(sum 2^-pv);
  *   offsets: the offsets are the bit-reversed interval positions of the hand
@@ -14,7 +15,8 @@
  *            the processes before it; A is a multiple of 2^-k and
  *            rev_k(offset) = 2^k A mod 2^k. This is the closed form the balance
  *            theorem rests on (harness `balance`), stated without Fig. 6's
- *            start/slots bookkeeping.
+ *            start/slots bookkeeping; and at the first member of each class
+ *            k: class_first[k] = a, class_lead[k] = 2^k - (2^k A mod 2^k).
  *
  * PROOF_PARTS (a bit set of the parts, default all) selects what one CBMC run
  * asserts. One SAT instance with all three parts is much harder than the three
@@ -51,6 +53,9 @@ void harness(void)
     uint32_t a;
     uint32_t i;
     uint32_t before; /* 2^P * A: area of the processes earlier in the order */
+    uint32_t sizes[BSCHED_MAX_PV + 1];
+    uint32_t minpv = PROOF_P;
+    uint32_t k;
     int32_t rc;
 
     proof_nondet_set(&set);
@@ -61,12 +66,19 @@ void harness(void)
     CHECK(PART_STATE, s.maxpv == set.maxpv, "init: maxpv is the largest priority value");
     CHECK(PART_STATE, s.cycle == 0u, "init: the schedule starts at minor cycle 0");
     CHECK(PART_STATE, s.ran_count == 0u, "init: nothing has run yet");
+    CHECK(PART_STATE, s.reversed == 0u, "init: the reversed counter starts at rev(0) = 0");
     CHECK(PART_PERFECT, s.perfect == set.load_hi, "init: perfect = ceil(sum 2^-pv)");
 
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        sizes[k] = 0u;
+    }
     for (i = 0u; i < PROOF_N; i++) {
         if (i < set.n) {
+            sizes[set.pv[i]]++;
+            if (set.pv[i] < minpv) {
+                minpv = set.pv[i];
+            }
             CHECK(PART_STATE, s.pv[i] == set.pv[i], "init: priority values kept in input order");
-            CHECK(PART_STATE, s.wait[i] == s.offset[i], "init: waits start at the offsets");
             CHECK(PART_STATE, (s.offset[i] >> set.pv[i]) == 0u, "init: offset below 2^pv");
         }
     }
@@ -104,7 +116,13 @@ void harness(void)
 #else
             uint32_t p = s.order[a];
 #endif
-            uint32_t k = set.pv[p];
+            k = set.pv[p];
+            if (a == 0u || set.pv[s.order[a - 1u]] != k) {
+                /* the first member of class k: where the class starts, and 2^k - s_k */
+                CHECK(PART_OFFSETS, s.class_first[k] == a, "init: class_first is the class's first slot");
+                CHECK(PART_OFFSETS, s.class_lead[k] == proof_mask(k) + 1u - ((before >> (PROOF_P - k)) & proof_mask(k)),
+                      "init: class_lead = 2^k - (2^k A mod 2^k)");
+            }
             /* A * 2^k is an integer: before is a multiple of 2^(P - k) */
             CHECK(PART_OFFSETS, (before & proof_mask(PROOF_P - k)) == 0u,
                   "init: each interval starts at a multiple of its length");
@@ -114,4 +132,8 @@ void harness(void)
         }
     }
     CHECK(PART_OFFSETS, before == set.area, "init: the intervals tile [0, U)");
+    CHECK(PART_STATE, s.minpv == minpv, "init: minpv is the smallest priority value");
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        CHECK(PART_STATE, s.class_size[k] == sizes[k], "init: class_size is the class's number of members");
+    }
 }

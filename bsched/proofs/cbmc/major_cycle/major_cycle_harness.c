@@ -12,8 +12,8 @@
  *     pv, ties by index), and as many as bsched_run_cycle returns;
  *   - load: every minor cycle runs floor(U) or ceil(U) processes;
  *   - the state after the major cycle equals the state after bsched_init
- *     (count, maxpv, perfect, cycle, pv, offset, wait, order): the schedule
- *     really repeats. ran[] and ran_count describe only the last minor cycle.
+ *     (count, maxpv, perfect, cycle, reversed, pv, offset, order, the class
+ *     table): the schedule really repeats. ran[] and ran_count describe only the last minor cycle.
  */
 #include "proof_model.h"
 
@@ -86,11 +86,12 @@ void harness(void)
         if (i < set.n) {
             __CPROVER_assert(r.runs[i] == cycles >> set.pv[i],
                              "periodicity: 2^(maxpv - pv) runs per major cycle");
-            __CPROVER_assert(s.wait[i] == before.wait[i] && s.offset[i] == before.offset[i] &&
+            __CPROVER_assert(bsched_wait(&s, (uint16_t)i) == (int32_t)before.offset[i] && s.offset[i] == before.offset[i] &&
                              s.pv[i] == before.pv[i] && s.order[i] == before.order[i],
                              "repeat: per-process state after the major cycle equals the initial state");
         }
     }
     __CPROVER_assert(s.count == before.count && s.maxpv == before.maxpv && s.perfect == before.perfect &&
-                     s.cycle == before.cycle, "repeat: count, maxpv, perfect and cycle back to the initial state");
+                     s.cycle == before.cycle && s.reversed == before.reversed,
+                     "repeat: count, maxpv, perfect, cycle and reversed back to the initial state");
 }
