@@ -86,7 +86,7 @@ int32_t bsched_fig7_start(struct bsched_fig7 *r, const struct bsched *plan)
     for (i = 0u; i < count; i++) {
         r->wait[i] = plan->offset[i];
     }
-    r->cycle = 0u;
+    r->cycle = 0;
     r->ran_count = 0u;
     /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
     /*@ assert waits_in_phase: \forall integer j; 0 <= j < count ==>
@@ -196,6 +196,7 @@ static uint32_t fig7_run_due(struct bsched_fig7 *r, const struct bsched *plan, u
 int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
 {
     uint32_t done;
+    uint32_t next;
     uint32_t i;
     uint32_t count;
     uint32_t perfect;
@@ -208,7 +209,7 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
     }
     count = plan->count;
     perfect = plan->perfect;
-    /*@ ghost uint32_t t = r->cycle; */
+    /*@ ghost uint32_t t = (uint32_t)r->cycle; */
     /*@ ghost uint32_t g; */
     /*@ assert phase_at_t: \forall integer q; 0 <= q < count ==>
             (t + r->wait[q]) % pow2(plan->pv[q]) == plan->offset[q]; */
@@ -278,13 +279,16 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
     /*@ assert next_phase: \forall integer q; 0 <= q < count ==>
             (r->wait[q] + 1 == pow2(plan->pv[q]) && t % pow2(plan->pv[q]) == plan->offset[q]) ||
             (t + r->wait[q] + 1) % pow2(plan->pv[q]) == plan->offset[q]; */
+    next = ((uint32_t)r->cycle + 1u) % fig7_period(plan->maxpv);
+    /*@ assert count_same: plan->count == count; */
+    /*@ ghost lemma_fig7_next_phase(r, plan, t, next); */
     /*@ ghost Stepped: ; */
     r->ran_count = (uint16_t)done;
     /*@ assert ran_kept: \forall integer j; 0 <= j < done ==> r->ran[j] == \at(r->ran[j], Stepped); */
-    r->cycle = (r->cycle + 1u) % fig7_period(plan->maxpv);
-    /*@ assert waits_kept: \forall integer q; 0 <= q < count ==> r->wait[q] == \at(r->wait[q], Stepped); */
-    /*@ assert ran_range: \forall integer j; 0 <= j < done ==> r->ran[j] < count; */
-    /*@ ghost lemma_fig7_next_phase(r, plan, t); */
+    /*@ assert next_fits: next < pow2(plan->maxpv) <= pow2(BSCHED_MAX_PV); */
+    r->cycle = (int32_t)next;
+    /*@ assert in_phase_final: \forall integer q; 0 <= q < count ==>
+            (r->cycle + r->wait[q]) % pow2(plan->pv[q]) == plan->offset[q]; */
     /*@ assert ran_final: \forall integer j; 0 <= j < done ==> r->ran[j] < plan->count; */
     /*@ assert done_small: done <= count <= BSCHED_MAX_PROCS; */
     return (int32_t)done;

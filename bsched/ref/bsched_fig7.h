@@ -20,7 +20,10 @@
 
 /* Fig. 7's mutable state; the plan lives in a struct bsched. */
 struct bsched_fig7 {
-    uint32_t cycle;                    /* current minor cycle, 0..2^maxpv-1 */
+    /* current minor cycle, 0..2^maxpv-1 (<= 2^31 - 1). Signed on purpose: in
+     * WP's typed memory model a store to it then cannot touch wait[], so the
+     * proof does not have to carry every wait across that store. */
+    int32_t cycle;
     uint16_t ran_count;                /* processes run in the last minor cycle */
     uint32_t wait[BSCHED_MAX_PROCS];   /* minor cycles until the next run, input order */
     uint16_t ran[BSCHED_MAX_PROCS];    /* input indices run in the last minor cycle, in order */

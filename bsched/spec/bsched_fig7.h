@@ -24,7 +24,7 @@
 
   // The engine's ranges: the cycle within the major cycle, waits below their period.
   predicate fig7_well_formed{L}(struct bsched_fig7 *r, struct bsched *s) =
-      r->cycle < pow2(s->maxpv) &&
+      0 <= r->cycle < pow2(s->maxpv) &&
       \forall integer i; 0 <= i < s->count ==> r->wait[i] < pow2(s->pv[i]);
 
   // The periodicity invariant at the start of minor cycle t = r->cycle:
@@ -68,33 +68,36 @@
   }
 */
 
-/* Back in phase for cycle t + 1 after a step: a process that ran restarts a
- * full period (t + 2^pv == t mod 2^pv), the others counted down by one; the
- * cycle counter wraps at 2^maxpv, a multiple of every period. */
+/* Back in phase for cycle c = t + 1 (mod 2^maxpv) after a step: a process that
+ * ran restarts a full period (t + 2^pv == t mod 2^pv), the others counted down
+ * by one; the cycle counter wraps at 2^maxpv, a multiple of every period.
+ * Stated for the next cycle c before it is stored in r->cycle, so that the
+ * waits need not be carried across that store. */
 /*@ ghost
   /@ requires \valid_read(r) && \valid_read(s);
      requires 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV;
      requires \forall integer q; 0 <= q < s->count ==> s->pv[q] <= s->maxpv;
      requires \forall integer q; 0 <= q < s->count ==> r->wait[q] < pow2(s->pv[q]);
-     requires t + 1 <= pow2(s->maxpv) && r->cycle == (t + 1) % pow2(s->maxpv);
+     requires t + 1 <= pow2(s->maxpv) && c == (t + 1) % pow2(s->maxpv);
      requires \forall integer q; 0 <= q < s->count ==>
          (r->wait[q] + 1 == pow2(s->pv[q]) && t % pow2(s->pv[q]) == s->offset[q]) ||
          (t + r->wait[q] + 1) % pow2(s->pv[q]) == s->offset[q];
      assigns \nothing;
-     ensures in_phase: fig7_in_phase(r, s);
+     ensures in_phase: \forall integer q; 0 <= q < s->count ==>
+         (c + r->wait[q]) % pow2(s->pv[q]) == s->offset[q];
   @/
-  void lemma_fig7_next_phase(struct bsched_fig7 *r, const struct bsched *s, uint32_t t)
+  void lemma_fig7_next_phase(struct bsched_fig7 *r, const struct bsched *s, uint32_t t, uint32_t c)
   {
     uint32_t g;
     /@ loop invariant 0 <= g <= s->count;
        loop invariant \forall integer q; 0 <= q < g ==>
-           (r->cycle + r->wait[q]) % pow2(s->pv[q]) == s->offset[q];
+           (c + r->wait[q]) % pow2(s->pv[q]) == s->offset[q];
        loop assigns g;
        loop variant s->count - g;
     @/
     for (g = 0u; g < s->count; g++) {
       lemma_full_period(t, s->pv[g]);
-      lemma_wrap_pow2(r->cycle, r->wait[g], t, s->pv[g], s->maxpv);
+      lemma_wrap_pow2(c, r->wait[g], t, s->pv[g], s->maxpv);
     }
   }
 */

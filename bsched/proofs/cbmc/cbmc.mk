@@ -49,7 +49,15 @@ cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC
 
 CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
 $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
-CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
+CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors agree
+# agree: bsched_step and Fig. 7's reference engine (bsched/ref/) give the same
+# results from any cycle t, and both states are again consistent for t + 1. In
+# make check at CBMC_AGREE_N, CBMC_AGREE_P; make cbmc-agree runs it at the goal
+# bounds CBMC_N, CBMC_P, one run per process count (long; not in make check).
+CBMC_AGREE_N ?= 4
+CBMC_AGREE_P ?= 3
+CBMC_HARNESS_agree       := agree
+CBMC_ARGS_agree          := N=$(CBMC_AGREE_N) P=$(CBMC_AGREE_P)
 CBMC_HARNESS_step        := step
 CBMC_ARGS_step           := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_balance     := balance
@@ -141,3 +149,17 @@ check-cbmc-deep:
 	@rm -f $(addsuffix /result.txt,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
 	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)) || true
 	@$(call cbmc_record,cbmc-deep,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
+
+# make cbmc-agree: harness agree at the goal bounds (N <= CBMC_N, P <= CBMC_P), one
+# SAT instance per process count n (agree-n<k>, exactly k processes), into
+# build/cbmc-agree/; suite record cbmc-agree. Long: not part of make check.
+CBMC_AGREE_RUNS := $(foreach n,$(shell seq $(CBMC_N) -1 1),agree-n$(n))
+.PHONY: cbmc-agree $(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS))
+$(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS)): cbmc-agree-agree-n%:
+	+@$(call cbmc_sub,agree) N=$(CBMC_N) P=$(CBMC_P) EXACT_N=$* OUT_NAME=agree-n$* \
+	    OUT=$(BUILD)/cbmc-agree/agree-n$*
+cbmc-agree:
+	@$(SETUP) cbmc
+	@rm -f $(addsuffix /result.txt,$(addprefix $(BUILD)/cbmc-agree/,$(CBMC_AGREE_RUNS)))
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS)) || true
+	@$(call cbmc_record,cbmc-agree,$(addprefix $(BUILD)/cbmc-agree/,$(CBMC_AGREE_RUNS)))
