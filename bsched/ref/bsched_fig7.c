@@ -163,6 +163,33 @@ static uint32_t fig7_run_due(struct bsched_fig7 *r, const struct bsched *plan, u
     return done;
 }
 
+/* Fig. 7, line 13: every positive wait counts down one cycle. A function of its
+ * own so that its loop is proven with this small contract as the only context. */
+/*@ requires \valid(r) && count <= BSCHED_MAX_PROCS;
+    requires positive: \forall integer q; 0 <= q < count ==> 1 <= r->wait[q];
+    assigns r->wait[0 .. BSCHED_MAX_PROCS - 1];
+    ensures counted_down: \forall integer q; 0 <= q < count ==> r->wait[q] == \old(r->wait[q]) - 1;
+    ensures others: \forall integer q; count <= q < BSCHED_MAX_PROCS ==> r->wait[q] == \old(r->wait[q]);
+*/
+static void fig7_count_down(struct bsched_fig7 *r, uint32_t count)
+{
+    uint32_t i;
+
+    /*@ loop invariant 0 <= i <= count;
+        loop invariant counted_down: \forall integer q; 0 <= q < i ==>
+            r->wait[q] == \at(r->wait[q], LoopEntry) - 1;
+        loop invariant not_yet: \forall integer q; i <= q < BSCHED_MAX_PROCS ==>
+            r->wait[q] == \at(r->wait[q], LoopEntry);
+        loop assigns i, r->wait[0 .. BSCHED_MAX_PROCS - 1];
+        loop variant count - i;
+    */
+    for (i = 0u; i < count; i++) {
+        if (r->wait[i] > 0u) {
+            r->wait[i]--;
+        }
+    }
+}
+
 /*@ requires valid: r == \null || \valid(r);
     requires valid_plan: plan == \null || \valid_read(plan);
     requires separated: r != \null && plan != \null ==> \separated(r, plan);
@@ -197,7 +224,6 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
 {
     uint32_t done;
     uint32_t next;
-    uint32_t i;
     uint32_t count;
     uint32_t perfect;
 
@@ -211,8 +237,6 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
     perfect = plan->perfect;
     /*@ ghost uint32_t t = (uint32_t)r->cycle; */
     /*@ ghost uint32_t g; */
-    /*@ assert phase_at_t: \forall integer q; 0 <= q < count ==>
-            (t + r->wait[q]) % pow2(plan->pv[q]) == plan->offset[q]; */
     /* In phase, a wait is 0 exactly when its process is due in cycle t. */
     /*@ ghost
       /@ loop invariant 0 <= g <= count;
@@ -253,27 +277,17 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
             (\exists integer j; 0 <= j < done && r->ran[j] == q) ==> t % pow2(plan->pv[q]) == plan->offset[q]; */
     /*@ assert periodic_all: \forall integer q; 0 <= q < count ==>
             t % pow2(plan->pv[q]) == plan->offset[q] ==> \exists integer j; 0 <= j < done && r->ran[j] == q; */
+    /*@ assert waits_positive: \forall integer q; 0 <= q < count ==> 1 <= r->wait[q] <= pow2(plan->pv[q]); */
+    /* Fig. 7, line 13 (after fig7_run_due every wait is positive). */
+    fig7_count_down(r, count);
+    /* Stated after the count-down, so that its proof does not carry them. */
+    /*@ assert phase_at_t: \forall integer q; 0 <= q < count ==>
+            (t + \at(r->wait[q], Pre)) % pow2(plan->pv[q]) == plan->offset[q]; */
     /*@ assert periodic_done: \forall integer q; 0 <= q < count ==>
             ((\exists integer j; 0 <= j < done && r->ran[j] == q) <==> t % pow2(plan->pv[q]) == plan->offset[q]); */
     /*@ assert phase_cases: \forall integer q; 0 <= q < count ==>
             (\at(r->wait[q], Pre) == 0 && t % pow2(plan->pv[q]) == plan->offset[q]) ||
             (\at(r->wait[q], Pre) != 0 && (t + \at(r->wait[q], Pre)) % pow2(plan->pv[q]) == plan->offset[q]); */
-    /*@ assert waits_positive: \forall integer q; 0 <= q < count ==> 1 <= r->wait[q] <= pow2(plan->pv[q]); */
-    /* Fig. 7, line 13: every positive wait counts down one cycle (after
-     * fig7_run_due every wait is positive). */
-    /*@ loop invariant 0 <= i <= count;
-        loop invariant counted_down: \forall integer q; 0 <= q < i ==>
-            r->wait[q] == \at(r->wait[q], LoopEntry) - 1;
-        loop invariant not_yet: \forall integer q; i <= q < count ==>
-            r->wait[q] == \at(r->wait[q], LoopEntry);
-        loop assigns i, r->wait[0 .. BSCHED_MAX_PROCS - 1];
-        loop variant count - i;
-    */
-    for (i = 0u; i < count; i++) {
-        if (r->wait[i] > 0u) {
-            r->wait[i]--;
-        }
-    }
     /*@ assert next_waits: \forall integer q; 0 <= q < count ==>
             r->wait[q] == (\at(r->wait[q], Pre) == 0 ? pow2(plan->pv[q]) - 1 : \at(r->wait[q], Pre) - 1); */
     /*@ assert next_phase: \forall integer q; 0 <= q < count ==>

@@ -31,6 +31,9 @@ void harness(void)
     struct proof_set set;
     uint32_t t;
     uint32_t next;
+    uint32_t due[BSCHED_MAX_PROCS];
+    uint32_t due_count = 0u;
+    uint32_t listed;
     uint32_t i;
     int32_t rc7;
     int32_t rc;
@@ -49,8 +52,31 @@ void harness(void)
     }
     before = s;
 
+    for (i = 0u; i < PROOF_N; i++) {
+        due[i] = i < set.n ? (uint32_t)proof_due_at(s.offset[i], set.pv[i], t) : 0u;
+        due_count += due[i];
+    }
+
+    /* Each engine against the closed form first, as checked lemmas (asserted,
+     * then assumed; include/proof_model.h): order[] is the identity, so both
+     * must list the due processes in index order. The agreement below then
+     * follows from the two, which keeps each SAT question local. */
     rc7 = bsched_fig7_step(&r, &s);
+    PROOF_LEMMA(rc7 >= 0 && (uint32_t)rc7 == due_count, "fig7: runs exactly the due processes");
+    for (i = 0u, listed = 0u; i < PROOF_N; i++) {
+        if (due[i] != 0u) {
+            PROOF_LEMMA(listed < due_count && r.ran[listed] == i, "fig7: ran[] lists them in execution order");
+            listed++;
+        }
+    }
     rc = bsched_step(&s);
+    PROOF_LEMMA(rc >= 0 && (uint32_t)rc == due_count, "step: runs exactly the due processes");
+    for (i = 0u, listed = 0u; i < PROOF_N; i++) {
+        if (due[i] != 0u) {
+            PROOF_LEMMA(listed < due_count && s.ran[listed] == i, "step: ran[] lists them in execution order");
+            listed++;
+        }
+    }
 
     __CPROVER_assert(rc >= 0 && rc == rc7, "agree: the same return value");
     __CPROVER_assert(s.ran_count == r.ran_count, "agree: the same ran_count");
