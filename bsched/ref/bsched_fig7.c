@@ -299,7 +299,8 @@ int32_t bsched_fig7_step(struct bsched_fig7 *r, const struct bsched *plan)
     /*@ ghost Stepped: ; */
     r->ran_count = (uint16_t)done;
     /*@ assert ran_kept: \forall integer j; 0 <= j < done ==> r->ran[j] == \at(r->ran[j], Stepped); */
-    /*@ assert next_fits: next < pow2(plan->maxpv) <= pow2(BSCHED_MAX_PV); */
+    /*@ ghost lemma_pow2(BSCHED_MAX_PV); */
+    /*@ assert next_fits: next < pow2(plan->maxpv) <= pow2(BSCHED_MAX_PV) == 2147483648; */
     r->cycle = (int32_t)next;
     /*@ assert in_phase_final: \forall integer q; 0 <= q < count ==>
             (r->cycle + r->wait[q]) % pow2(plan->pv[q]) == plan->offset[q]; */
