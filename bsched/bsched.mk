@@ -6,10 +6,6 @@ PLAN_CFLAGS   := $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=65535
 CROSS_CC      ?= m68k-linux-gnu-gcc
 CROSS_CFLAGS  := -std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdlib -Wall -Wextra -Wpedantic -Wconversion -Werror
 
-# bsched/fast (test_bsched_fast, suite bsched-fast) compares bsched_fast_step with
-# Fig. 7's wait[] of the old state layout; bsched_step is now the O(classes + due)
-# step itself and has no wait[], so the suite is left out of ALL and CHECKS until
-# stream fig7 retires bsched/fast (its targets below still exist).
 ALL += $(BUILD)/bin/bsched-plan $(BUILD)/tests/test_bsched
 CHECKS += bsched-build bsched-unit bsched-plan
 HOST_UNIT_CHECKS += bsched-unit
@@ -22,20 +18,14 @@ $(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/bsched.c bsched/bs
 	@mkdir -p $(@D)
 	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ bsched/tests/test_bsched.c bsched/bsched.c -lcmocka
 
-$(BUILD)/tests/test_bsched_fast: bsched/tests/test_bsched_fast.c bsched/fast/bsched_fast.c bsched/fast/bsched_fast.h \
-        bsched/bsched.c bsched/bsched.h
-	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/fast -DBSCHED_MAX_PROCS=4096 -o $@ \
-	    bsched/tests/test_bsched_fast.c bsched/fast/bsched_fast.c bsched/bsched.c -lcmocka
-
-# bsched.c (and bsched_fast.c) must compile warning-free for the host and for the CPU32 target.
-.PHONY: check-bsched-build check-bsched-unit check-bsched-fast check-bsched-plan
+# bsched.c (and Fig. 7's reference engine) must compile warning-free for the host and for the CPU32 target.
+.PHONY: check-bsched-build check-bsched-unit check-bsched-plan
 check-bsched-build:
 	@$(SETUP) base m68k
 	@pass=0; fail=0; \
 	for cfg in "$(HOST_CC) $(HOST_CFLAGS)" "$(HOST_CC) $(HOST_CFLAGS) -DBSCHED_MAX_PROCS=65535" \
 	           "$(CROSS_CC) $(CROSS_CFLAGS)" "$(CROSS_CC) $(CROSS_CFLAGS) -DBSCHED_MAX_PROCS=65535"; do \
-	    for src in bsched/bsched.c bsched/fast/bsched_fast.c; do \
+	    for src in bsched/bsched.c bsched/ref/bsched_fig7.c; do \
 	        if $$cfg -Ibsched -c -o /dev/null $$src; then pass=$$((pass+1)); echo "ok: $$cfg $$src"; \
 	        else fail=$$((fail+1)); echo "FAILED: $$cfg $$src"; fi; \
 	    done; \
@@ -52,14 +42,10 @@ check-bsched-unit: $(BUILD)/tests/test_bsched
 	@$(SETUP) base
 	@$(call cmocka_suite,bsched-unit,$(BUILD)/tests/test_bsched)
 
-# bsched_fast_step against Fig. 7's bsched_step on the same states (bsched/fast/).
-check-bsched-fast: $(BUILD)/tests/test_bsched_fast
-	@$(SETUP) base
-	@$(call cmocka_suite,bsched-fast,$(BUILD)/tests/test_bsched_fast)
-
 check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
 
+include bsched/ref/ref.mk
 include bsched/bench/bench.mk
 include bsched/dist/dist.mk

@@ -1,14 +1,15 @@
-# make bench: instructions per minor cycle of Fig. 7 (bsched_step) and of
-# bsched_fast_step side by side, N = 9 (Table 1), 64, 256, 1024, 4096 (pv 3..12),
-# on the host (callgrind) and on the emulated CPU32 (QEMU's instruction log);
-# also bsched_init and bsched_fast_init and the state's bytes. One line per case.
+# make bench: instructions per minor cycle of Fig. 7 (the reference engine
+# bsched/ref/bsched_fig7.c) and of the library's bsched_step side by side,
+# N = 9 (Table 1), 64, 256, 1024, 4096 (pv 3..12), on the host (callgrind) and on
+# the emulated CPU32 (QEMU's instruction log); also bsched_init, bsched_fig7_start
+# and the state's bytes per process. One line per case.
 # Writes build/bench/bench.txt. Long (a minute or two): not part of make check.
 
 BENCH_DIR    := $(BUILD)/bench
 BENCH_PROCS  := 4096
 BENCH_CYCLES ?= 256
-BENCH_LIB    := bsched/bsched.c bsched/fast/bsched_fast.c
-BENCH_HDRS   := bsched/bsched.h bsched/fast/bsched_fast.h bsched/bench/bench_core.h
+BENCH_LIB    := bsched/bsched.c bsched/ref/bsched_fig7.c
+BENCH_HDRS   := bsched/bsched.h bsched/ref/bsched_fig7.h bsched/bench/bench_core.h
 # The CPU32 image: the firmware's startup and console, no kernel; the library at
 # BSCHED_MAX_PROCS = 4096 (the firmware base objects carry it at 16).
 BENCH_FW_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c kernel/lib/kprintf.c \
@@ -16,11 +17,11 @@ BENCH_FW_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c kernel
                  bsched/bench/bench_cpu32.c $(BENCH_LIB)
 BENCH_FW_OBJS := $(patsubst %,$(BENCH_DIR)/cpu32/%.o,$(BENCH_FW_SRCS))
 BENCH_FW_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=% -MMD -MP,$(FW_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
-                 -I$(ROOT)/bsched/fast -DBENCH_CYCLES=$(BENCH_CYCLES)u
+                 -I$(ROOT)/bsched/ref -DBENCH_CYCLES=$(BENCH_CYCLES)u
 
 $(BENCH_DIR)/bsched-bench: bsched/bench/bench_host.c $(BENCH_LIB) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/fast -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
+	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
 	    bsched/bench/bench_host.c $(BENCH_LIB)
 
 $(BENCH_DIR)/cpu32/%.c.o: %.c $(BENCH_HDRS)

@@ -1,18 +1,19 @@
 #!/usr/bin/env python3
-"""make bench: instructions per minor cycle, Fig. 7 (bsched_step) against
-bsched_fast_step, on the host (callgrind) and on the emulated CPU32 (QEMU).
+"""make bench: instructions per minor cycle, Fig. 7 (the reference engine
+bsched_fig7_step) against the library's bsched_step, on the host (callgrind)
+and on the emulated CPU32 (QEMU).
 
 Host: bsched-bench N CYCLES runs under valgrind --tool=callgrind; the inclusive
-instruction counts (Ir) of bsched_init, bsched_fast_init, bsched_step and
-bsched_fast_step come from callgrind_annotate --inclusive=yes, divided by the
+instruction counts (Ir) of bsched_init, bsched_fig7_start, bsched_fig7_step and
+bsched_step come from callgrind_annotate --inclusive=yes, divided by the
 number of calls.
 
 CPU32: bench-cpu32.elf runs on qemu-system-m68k -M robocube under
 -singlestep -d exec,nochain, with -dfilter restricted to the library's
-functions (every text symbol of bsched.c and bsched_fast.c, and memcpy, which
-bsched_fast_init's struct copy calls) and bench_mark(). One log line is one
+functions (every text symbol of bsched.c and bsched_fig7.c, and memcpy and
+memset, should the compiler call them) and bench_mark(). One log line is one
 executed instruction; the lines between two bench_mark() calls are a phase
-(bench_cpu32.c: six per case). The log is read from a FIFO, never stored.
+(bench_cpu32.c: five per case). The log is read from a FIFO, never stored.
 
 Prints one line per case and platform, ending with the ratio, and writes them
 to --out. Exit 1 if a case is missing or the two dispatchers disagreed.
@@ -30,7 +31,8 @@ from pathlib import Path
 
 CASES = [9, 64, 256, 1024, 4096]
 CROSS = "m68k-linux-gnu-"
-LIB_FUNCS = ("bsched_init", "bsched_fast_init", "bsched_step", "bsched_fast_step")
+BENCH_PROCS = 4096  # BSCHED_MAX_PROCS of both bench programs (bench.mk)
+LIB_FUNCS = ("bsched_init", "bsched_fig7_start", "bsched_fig7_step", "bsched_step")
 
 
 def host_case(binary, n, cycles):
@@ -51,9 +53,9 @@ def host_case(binary, n, cycles):
     if missing:
         raise RuntimeError(f"host N={n}: no callgrind cost for {missing}")
     return {"n": n, "maxpv": int(fields[1]), "perfect": int(fields[2]),
-            "load": int(fields[4]) / cycles, "state": int(fields[5]), "table": int(fields[6]),
-            "init": cost["bsched_init"], "fast_init": cost["bsched_fast_init"],
-            "fig7": cost["bsched_step"] / cycles, "fast": cost["bsched_fast_step"] / cycles}
+            "load": int(fields[4]) / cycles, "state": int(fields[5]), "fig7_state": int(fields[6]),
+            "init": cost["bsched_init"], "fig7_start": cost["bsched_fig7_start"],
+            "fig7": cost["bsched_fig7_step"] / cycles, "step": cost["bsched_step"] / cycles}
 
 
 def symbols(path, defined_text_only=True):
@@ -74,7 +76,7 @@ def cpu32_run(elf, qemu, objs, cycles, seconds=900):
     names = set()
     for obj in objs:
         names.update(symbols(obj))
-    names.add("memcpy")
+    names.update(("memcpy", "memset"))
     ranges = [elf_syms[name] for name in sorted(names) if name in elf_syms]
     mark_pc, mark_size = elf_syms["bench_mark"]
     ranges.append(elf_syms["bench_mark"])
@@ -133,24 +135,26 @@ def cpu32_run(elf, qemu, objs, cycles, seconds=900):
     results = {}
     for m in re.finditer(r"bench case (\d+): N=(\d+) maxpv=(\d+) perfect=(\d+) load=(\d+) (\w+)", text):
         c, n = int(m.group(1)), int(m.group(2))
-        phases = counts[6 * c: 6 * c + 6]
-        if len(phases) < 5:
+        phases = counts[5 * c: 5 * c + 5]
+        if len(phases) < 4:
             raise RuntimeError(f"CPU32 N={n}: only {len(phases)} phases traced")
         results[n] = {"n": n, "maxpv": int(m.group(3)), "perfect": int(m.group(4)),
                       "load": int(m.group(5)) / cycles, "same": m.group(6) == "same",
-                      "init": phases[0], "fast_init": phases[2],
-                      "fig7": phases[3] / cycles, "fast": phases[4] / cycles}
-    sizes = re.search(r"struct bsched (\d+) bytes \(BSCHED_MAX_PROCS (\d+)\), struct bsched_fast (\d+)", text)
+                      "init": phases[0], "fig7_start": phases[1],
+                      "fig7": phases[2] / cycles, "step": phases[3] / cycles}
+    sizes = re.search(r"struct bsched (\d+) bytes \(BSCHED_MAX_PROCS (\d+)\), struct bsched_fig7 (\d+)", text)
     return results, (int(sizes.group(1)), int(sizes.group(2)), int(sizes.group(3)))
 
 
 def line(platform, r, procs):
-    ratio = r["fig7"] / r["fast"]
+    ratio = r["fig7"] / r["step"]
     pvs = "pv 1..4 (Table 1)" if r["n"] == 9 else "pv 3..12 uniform"
+    # State bytes per process at capacity `procs`: the library's struct bsched
+    # alone; Fig. 7 needs it (the plan) and its own struct bsched_fig7 (waits, ran).
     return (f"{platform:5} N={r['n']:<5} {pvs:17} due/cycle {r['load']:6.1f}  "
-            f"init {r['init']:>9,} + table {r['fast_init']:>7,} instr  "
-            f"state {r['state'] / procs:5.2f} B/proc + table {r['table']} B  "
-            f"fig7 {r['fig7']:>9,.1f}  fast {r['fast']:>7,.1f} instr/cycle  ratio {ratio:6.1f}x")
+            f"bsched_init {r['init']:>9,} instr (fig7_start {r['fig7_start']:>7,})  "
+            f"state {r['state'] / procs:5.2f} B/proc (fig7 {(r['state'] + r['fig7_state']) / procs:5.2f})  "
+            f"fig7 {r['fig7']:>9,.1f}  bsched_step {r['step']:>7,.1f} instr/cycle  ratio {ratio:6.1f}x")
 
 
 def main():
@@ -162,21 +166,21 @@ def main():
     ap.add_argument("--out", required=True)
     args = ap.parse_args()
     elf = Path(args.elf)
-    objs = [elf.parent / "cpu32/bsched/bsched.c.o", elf.parent / "cpu32/bsched/fast/bsched_fast.c.o"]
+    objs = [elf.parent / "cpu32/bsched/bsched.c.o", elf.parent / "cpu32/bsched/ref/bsched_fig7.c.o"]
     lines = [f"# instructions per minor cycle over {args.cycles} cycles from cycle 0; "
-             "init = bsched_init, table = bsched_fast_init (once); ratio = fig7 / fast"]
+             f"state at BSCHED_MAX_PROCS = {BENCH_PROCS}; ratio = fig7 / bsched_step"]
     ok = True
     for n in CASES:
         r = host_case(args.host, n, args.cycles)
-        lines.append(line("host", r, 4096))
+        lines.append(line("host", r, BENCH_PROCS))
         print(lines[-1], flush=True)
-    cpu, (state, procs, table) = cpu32_run(elf, args.qemu, objs, args.cycles)
+    cpu, (state, procs, fig7_state) = cpu32_run(elf, args.qemu, objs, args.cycles)
     for n in CASES:
         if n not in cpu:
             print(f"cpu32 N={n}: missing", file=sys.stderr)
             ok = False
             continue
-        r = dict(cpu[n], state=state, table=table)
+        r = dict(cpu[n], state=state, fig7_state=fig7_state)
         ok = ok and r["same"]
         lines.append(line("cpu32", r, procs) + ("" if r["same"] else "  DIFFERENT"))
         print(lines[-1], flush=True)

@@ -2,10 +2,11 @@
  * The CPU32 side of `make bench`: a bare test image (startup and console of
  * the firmware base, no kernel) that runs every case of bench_core.h on the
  * emulated RoboCube. bench.py runs it under QEMU's instruction log restricted
- * to the library's functions (-dfilter) and counts the instructions between
- * two calls of bench_mark(), six per case: bsched_init, (the state copy, not
- * measured), bsched_fast_init, BENCH_CYCLES minor cycles of bsched_step (Fig. 7),
- * the same cycles of bsched_fast_step, (the report, not measured). The image prints one line per case, and "bench done".
+ * to the library's and the reference engine's functions (-dfilter) and counts
+ * the instructions between two calls of bench_mark(), five per case:
+ * bsched_init, bsched_fig7_start, BENCH_CYCLES minor cycles of
+ * bsched_fig7_step (Fig. 7), the same cycles of bsched_step, (the report, not
+ * measured). The image prints one line per case, and "bench done".
  */
 #include <stdint.h>
 
@@ -17,8 +18,8 @@
 #define BENCH_CYCLES 256u
 #endif
 
-static struct bsched fig7, fast;
-static struct bsched_fast table;
+static struct bsched sched;
+static struct bsched_fig7 fig7;
 static uint8_t pv[BSCHED_MAX_PROCS];
 
 /* The phase boundary bench.py looks for (its first instruction). */
@@ -34,34 +35,32 @@ int main(void)
 
     console_init();
     kprintf("bench: %u cycles per case, struct bsched %lu bytes (BSCHED_MAX_PROCS %u), "
-            "struct bsched_fast %lu bytes\n", (unsigned)BENCH_CYCLES,
-            (unsigned long)sizeof fig7, (unsigned)BSCHED_MAX_PROCS, (unsigned long)sizeof table);
+            "struct bsched_fig7 %lu bytes\n", (unsigned)BENCH_CYCLES,
+            (unsigned long)sizeof sched, (unsigned)BSCHED_MAX_PROCS, (unsigned long)sizeof fig7);
     for (c = 0u; c < BENCH_CASES; c++) {
         uint32_t n = bench_sizes[c];
-        uint32_t sum7 = 0u, sumf = 0u, load = 0u, t;
+        uint32_t sum7 = 0u, sum = 0u, load = 0u, t;
         int32_t rc;
 
         bench_make_set(pv, n);
-        bench_mark(6u * c);
-        rc = bsched_init(&fig7, pv, n);
-        bench_mark(6u * c + 1u);
-        fast = fig7; /* not measured: its own phase */
-        bench_mark(6u * c + 2u);
-        rc |= bsched_fast_init(&table, &fast);
-        bench_mark(6u * c + 3u);
+        bench_mark(5u * c);
+        rc = bsched_init(&sched, pv, n);
+        bench_mark(5u * c + 1u);
+        rc |= bsched_fig7_start(&fig7, &sched);
+        bench_mark(5u * c + 2u);
         for (t = 0u; t < BENCH_CYCLES; t++) {
-            int32_t ran = bsched_step(&fig7);
-            sum7 = bench_sum(sum7, &fig7, ran);
+            int32_t ran = bsched_fig7_step(&fig7, &sched);
+            sum7 = bench_sum(sum7, fig7.ran, ran);
             load += (uint32_t)ran;
         }
-        bench_mark(6u * c + 4u);
+        bench_mark(5u * c + 3u);
         for (t = 0u; t < BENCH_CYCLES; t++) {
-            sumf = bench_sum(sumf, &fast, bsched_fast_step(&fast, &table));
+            sum = bench_sum(sum, sched.ran, bsched_step(&sched));
         }
-        bench_mark(6u * c + 5u);
+        bench_mark(5u * c + 4u);
         kprintf("bench case %lu: N=%lu maxpv=%u perfect=%u load=%lu %s\n", (unsigned long)c,
-                (unsigned long)n, (unsigned)fig7.maxpv, (unsigned)fig7.perfect, (unsigned long)load,
-                rc == 0 && sum7 == sumf ? "same" : "DIFFERENT");
+                (unsigned long)n, (unsigned)sched.maxpv, (unsigned)sched.perfect, (unsigned long)load,
+                rc == 0 && sum7 == sum ? "same" : "DIFFERENT");
     }
     kprintf("bench done\n");
     return 0;

@@ -14,8 +14,8 @@ DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 # Repository paths, kept as they are inside the bundle (so the proof jobs' own
 # Makefiles run unchanged there).
 DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
-    bsched/fast/bsched_fast.c bsched/fast/bsched_fast.h \
-    bsched/tests/test_bsched.c bsched/tests/test_bsched_fast.c bsched/proofs/README.md \
+    bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/ref/tests/test_bsched_fig7.c \
+    bsched/tests/test_bsched.c bsched/proofs/README.md \
     $(filter-out %.pyc,$(shell find bsched/proofs/wp bsched/proofs/cbmc -type f -not -path '*/__pycache__/*'))
 
 CHECKS += dist

@@ -49,9 +49,15 @@ cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC
 
 CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
 $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
-# (fast, fast-due: bsched/fast against Fig. 7's wait[], which the state no longer
-# has; left out until stream fig7 retires bsched/fast.)
-CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors
+CBMC_RUNS := step balance $(CBMC_INIT_RUNS) major_cycle init errors agree
+# agree: bsched_step and Fig. 7's reference engine (bsched/ref/) give the same
+# results from any cycle t, and both states are again consistent for t + 1. In
+# make check at CBMC_AGREE_N, CBMC_AGREE_P; make cbmc-agree runs it at the goal
+# bounds CBMC_N, CBMC_P, one run per process count (long; not in make check).
+CBMC_AGREE_N ?= 4
+CBMC_AGREE_P ?= 3
+CBMC_HARNESS_agree       := agree
+CBMC_ARGS_agree          := N=$(CBMC_AGREE_N) P=$(CBMC_AGREE_P)
 # step: the new bsched_step divides by 2^(maxpv - k) and reduces mod 2^k (shifts
 # and masks for the compiler, dividers for the SAT back end), so its run is far
 # below the goal bounds (bsched/proofs/README.md); WP proves it for every set.
@@ -67,17 +73,6 @@ CBMC_HARNESS_init        := init
 CBMC_ARGS_init           := ORDERS=any N=6 P=3
 CBMC_HARNESS_errors      := errors
 CBMC_ARGS_errors         := N=8
-# bsched_fast (bsched/fast/): equal to Fig. 7's bsched_step cycle by cycle, by
-# induction over the cycles from any state of the periodicity invariant with the
-# closed-form offsets (fast), and bsched_fast_due / bsched_wait equal to bsched_due
-# / wait[] (fast-due). Below the goal bounds (see bsched/proofs/README.md).
-CBMC_FAST_N ?= 4
-CBMC_FAST_P ?= 3
-CBMC_HARNESS_fast        := fast
-CBMC_ARGS_fast           := N=$(CBMC_FAST_N) P=$(CBMC_FAST_P)
-CBMC_HARNESS_fast-due    := fast
-CBMC_ARGS_fast-due       := N=$(CBMC_FAST_N) P=$(CBMC_FAST_P) EXTRA_DEFINES=-DPROOF_FAST_DUE=1
-
 # The negative check: the unbalanced mutant must be caught by every harness that
 # runs bsched_init (balance takes its offsets from bsched_init for this).
 CBMC_MUTANT_RUNS := major_cycle init balance
@@ -159,3 +154,17 @@ check-cbmc-deep:
 	@rm -f $(addsuffix /result.txt,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
 	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-deep-,$(CBMC_DEEP_RUNS)) || true
 	@$(call cbmc_record,cbmc-deep,$(addprefix $(BUILD)/cbmc-deep/,$(CBMC_DEEP_RUNS)))
+
+# make cbmc-agree: harness agree at the goal bounds (N <= CBMC_N, P <= CBMC_P), one
+# SAT instance per process count n (agree-n<k>, exactly k processes), into
+# build/cbmc-agree/; suite record cbmc-agree. Long: not part of make check.
+CBMC_AGREE_RUNS := $(foreach n,$(shell seq $(CBMC_N) -1 1),agree-n$(n))
+.PHONY: cbmc-agree $(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS))
+$(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS)): cbmc-agree-agree-n%:
+	+@$(call cbmc_sub,agree) N=$(CBMC_N) P=$(CBMC_P) EXACT_N=$* OUT_NAME=agree-n$* \
+	    OUT=$(BUILD)/cbmc-agree/agree-n$*
+cbmc-agree:
+	@$(SETUP) cbmc
+	@rm -f $(addsuffix /result.txt,$(addprefix $(BUILD)/cbmc-agree/,$(CBMC_AGREE_RUNS)))
+	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-agree-,$(CBMC_AGREE_RUNS)) || true
+	@$(call cbmc_record,cbmc-agree,$(addprefix $(BUILD)/cbmc-agree/,$(CBMC_AGREE_RUNS)))
