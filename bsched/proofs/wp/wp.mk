@@ -9,8 +9,8 @@ WP_SPEC     := $(addprefix bsched/spec/,bsched_logic.h bsched_lemmas.h bsched_or
                bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h)
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
 # WP starts the provers side by side on each goal and keeps the first proof (measured
-# 2026-11-21, 1746 goals: Qed 1039, CVC4 380, CVC5 189, Z3 with bounded instantiation
-# 138; plain Z3 is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
+# 2026-11-24, 2669 goals: Qed 1549, CVC4 671, CVC5 260, Z3 with bounded instantiation
+# 189; plain Z3 is left out). z3-qi and the cvc5 entry are set up by ci/setup.d/frama-c.sh.
 WP_PROVERS  ?= cvc4,z3-qi,cvc5
 # Every prover call is limited by steps (-wp-steps: cvc4/cvc5 --rlimit, Z3 rlimit),
 # which do not depend on the machine's speed or load, so neither can turn a proven
@@ -20,13 +20,13 @@ WP_PROVERS  ?= cvc4,z3-qi,cvc5
 # A goal cut by steps is reported as "Step limit" by all three (why3-config.sh). The
 # wall-clock timeout is only a backstop against a prover that hangs: Why3 kills a
 # step-limited call after 2 x WP_TIMEOUT + 1 s and reports Timeout from 0.9 x WP_TIMEOUT.
-WP_STEPS    ?= 830000
-export WP_STEPS_Z3 ?= 11000000
+WP_STEPS    ?= 2200000
+export WP_STEPS_Z3 ?= 13000000
 WP_TIMEOUT  ?= 600
 # Prover jobs per Frama-C process: prover start-up, not CPU, bounds a run.
 WP_PAR      ?= 3
 # The full run has more goals than this; fewer means something was not analysed.
-WP_MIN_GOALS ?= 1700
+WP_MIN_GOALS ?= 2600
 WP_DEFINES  ?=
 WP_FCT      ?=
 WP_OUT      ?= $(WP_DIR)
