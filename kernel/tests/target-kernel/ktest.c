@@ -55,6 +55,17 @@ __attribute__((unused)) static void finish(void)
 }
 
 /* ------------------------------------------------------------------ */
+/* Bytes of its stack the thread on `stack` has used (0 if none runs on it). */
+__attribute__((unused)) static uint32_t stack_used_on(const void *stack)
+{
+    struct k_thread_info info[8];
+    int i, n = k_thread_list(info, 8);
+    for (i = 0; i < n && i < 8; i++)
+        if (info[i].stack_base == stack)
+            return info[i].stack_used;
+    return 0;
+}
+
 #if KTEST_MODE == KTEST_PREEMPT
 /* Two threads at one priority spin without ever yielding; a more urgent
  * thread sleeps. Only the PIT tick can take the CPU from a spinner. */
@@ -616,10 +627,8 @@ static uint32_t spins_over(k_ticks_t ticks)
 static void *controller(void *arg)
 {
     static const uint8_t pv[] = {0};
-    struct k_thread_info info[8];
     uint32_t alone, loaded, events0, events, lines0, lines, irq_bytes = 0, irq_used = 0;
     uint32_t spin_used = 0;
-    int i, n;
     (void)arg;
     k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
     k_sleep_ticks(2);
@@ -636,10 +645,7 @@ static void *controller(void *arg)
     k_thread_join(&kb.thread, NULL, K_FOREVER);
     stop_spinning = 1;
     k_thread_join(&t_a, NULL, K_FOREVER);
-    n = k_thread_list(info, 8);
-    for (i = 0; i < n && i < 8; i++)
-        if (info[i].stack_base == stack_a)
-            spin_used = info[i].stack_used;
+    spin_used = stack_used_on(stack_a);
     (void)k_irq_stack_usage(&irq_bytes, &irq_used);
     k_printf("KTEST window=%lu spins_alone=%lu spins_overload=%lu share_permille=%lu "
              "overrun_events=%lu report_lines=%lu interval=%lu spinner_stack_used=%lu "
@@ -751,9 +757,7 @@ static void *spinner(void *arg)
 
 static void *controller(void *arg)
 {
-    struct k_thread_info info[4];
     uint32_t spin_used = 0, size = 0, used = 0;
-    int i, n;
     (void)arg;
     k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
     k_sleep_ticks(20);                /* the console is idle again */
@@ -763,10 +767,7 @@ static void *controller(void *arg)
     k_board_tick_callback = NULL;
     stop_spinning = 1;
     k_thread_join(&t_a, NULL, K_FOREVER);
-    n = k_thread_list(info, 4);
-    for (i = 0; i < n && i < 4; i++)
-        if (info[i].stack_base == stack_a)
-            spin_used = info[i].stack_used;
+    spin_used = stack_used_on(stack_a);
     (void)k_irq_stack_usage(&size, &used);
     k_printf("KTEST tick_depth=%lu used_before=%lu used_after=%lu "
              "spinner_stack_used=%lu irq_stack_bytes=%lu\n",
