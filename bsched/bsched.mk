@@ -14,7 +14,7 @@ $(BUILD)/bin/bsched-plan: tools/bsched-plan.c bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PLAN_CFLAGS) -o $@ tools/bsched-plan.c bsched/bsched.c
 
-$(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/bsched.c bsched/bsched.h
+$(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/tests/table2.h bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
 	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ bsched/tests/test_bsched.c bsched/bsched.c -lcmocka
 

@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "bsched.h"
+#include "table2.h"
 
 static struct bsched sched;
 
@@ -209,7 +210,6 @@ static void check_against_model(const uint8_t *pv, size_t n)
 
 /* ---------- the paper's example ---------- */
 
-static const uint8_t table1_pv[] = {1, 1, 1, 2, 2, 3, 4, 4, 4};
 
 static void test_table1_waits(void **state)
 {
@@ -226,13 +226,7 @@ static void test_table1_waits(void **state)
 
 static void test_table2_major_cycle(void **state)
 {
-    /* Table 2 with p1.1..p4.3 as input indices 0..8, -1 ends a row. */
-    static const int table2[16][4] = {
-        {0, 2, 5, -1}, {1, 3, -1}, {0, 2, 8, -1}, {1, 4, -1},
-        {0, 2, 6, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-        {0, 2, 5, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-        {0, 2, 7, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-    };
+    /* Table 2 (table2.h). */
     int t, k;
     (void)state;
     plan(table1_pv, 9);

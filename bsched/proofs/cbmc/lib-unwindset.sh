@@ -6,8 +6,10 @@
 # iterates over (the loop header is read from the source line CBMC reports):
 #   BSCHED_MAX_PV  priority classes           -> 32 iterations
 #   minpv          classes minpv..maxpv <= P  -> P + 1
-#   maxpv, bits    priority values <= P       -> P
-#   count, n, class_size, ran  processes <= N -> N
+#   maxpv, bits, bit  priority values <= P    -> P (bit: the carry of the
+#                  bit-reversed counter halves a bit below 2^maxpv each turn)
+#   count, n, class_size, ran, slot  processes <= N -> N (slot: the walk over
+#                  a class's members in order[])
 # (CBMC's bound is iterations + 1.) A loop matching none of these stops the run
 # with an error rather than getting a guessed bound; and --unwinding-assertions
 # turns a bound that is too small into a failed property.
@@ -20,9 +22,9 @@ while read -r loop file line; do
         bound=33
     elif [[ $text =~ (^|[^A-Za-z0-9_])minpv([^A-Za-z0-9_]|$) ]]; then
         bound=$((p + 2))
-    elif [[ $text =~ (^|[^A-Za-z0-9_])(maxpv|bits)([^A-Za-z0-9_]|$) ]]; then
+    elif [[ $text =~ (^|[^A-Za-z0-9_])(maxpv|bits|bit)([^A-Za-z0-9_]|$) ]]; then
         bound=$((p + 1))
-    elif [[ $text =~ (^|[^A-Za-z0-9_])(count|n|class_size|ran)([^A-Za-z0-9_]|$) ]]; then
+    elif [[ $text =~ (^|[^A-Za-z0-9_])(count|n|class_size|ran|slot)([^A-Za-z0-9_]|$) ]]; then
         bound=$((n + 1))
     else
         echo "lib-unwindset.sh: no bound rule for the loop $loop at $file:$line:" >&2

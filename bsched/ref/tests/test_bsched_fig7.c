@@ -18,6 +18,7 @@
 
 #include "bsched.h"
 #include "bsched_fig7.h"
+#include "../../tests/table2.h"
 
 static struct bsched plan, plan_copy, library;
 static struct bsched_fig7 ref;
@@ -78,17 +79,10 @@ static void check_engine(const uint8_t *pv, size_t n, uint64_t cycles)
 
 static void test_table2(void **state)
 {
-    /* The paper's Table 2: p1.1..p4.3 are input indices 0..8, -1 ends a row. */
-    static const uint8_t pv[] = {1, 1, 1, 2, 2, 3, 4, 4, 4};
-    static const int table2[16][4] = {
-        {0, 2, 5, -1}, {1, 3, -1}, {0, 2, 8, -1}, {1, 4, -1},
-        {0, 2, 6, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-        {0, 2, 5, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-        {0, 2, 7, -1}, {1, 3, -1}, {0, 2, -1},    {1, 4, -1},
-    };
+    /* The paper's Table 2 (bsched/tests/table2.h). */
     int t, k;
     (void)state;
-    assert_int_equal(bsched_init(&plan, pv, 9), BSCHED_OK);
+    assert_int_equal(bsched_init(&plan, table1_pv, 9), BSCHED_OK);
     assert_int_equal(bsched_fig7_start(&ref, &plan), BSCHED_OK);
     for (t = 0; t < 32; t++) {
         int32_t ran = bsched_fig7_step(&ref, &plan);
@@ -98,7 +92,7 @@ static void test_table2(void **state)
         }
         assert_int_equal(ran, k);
     }
-    check_engine(pv, 9, 48);
+    check_engine(table1_pv, 9, 48);
 }
 
 static void test_shapes(void **state)
