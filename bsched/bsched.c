@@ -527,38 +527,43 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
         out[x] == \old(order[first + (j0 + (x - done) * p)]);
 */
 static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
-                           size_t first, size_t j0, size_t size, size_t p)
+                           uint_fast32_t first, uint_fast32_t j0, uint_fast32_t size, uint_fast32_t p)
 {
-    size_t slot = first + j0;
-    size_t end = first + size;
+    /* At least 32-bit slots, not size_t: p is up to 2^31 and size_t may be 16
+     * bits (AVR); slot + p stays below 2^32 as slot < first + size <= 65535.
+     * "fast": on x86-64 the index then needs no zero extension. */
+    uint_fast32_t slot = first + j0;
+    uint_fast32_t end = first + size;
+    size_t next = done;
     /*@ ghost
       int64_t cnt = ((int64_t)size - 1 - (int64_t)j0) / (int64_t)p + 1;
       int64_t m = 0;
       step_count_members((int64_t)p, (int64_t)j0, (int64_t)size, cnt);
     */
     /*@ loop invariant walk: 0 <= m < cnt && slot == first + (j0 + m * p) && slot < end;
-        loop invariant counted: done == \at(done, Pre) + m;
+        loop invariant counted: next == done + m;
         loop invariant kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> order[d] == \at(order[d], Pre);
-        loop invariant emitted: \forall integer x; \at(done, Pre) <= x < done ==>
-            out[x] == \at(order[first + (j0 + (x - \at(done, Pre)) * p)], Pre);
-        loop assigns slot, done, m, out[\at(done, Pre) .. \at(done, Pre) + (size - 1 - j0) / p];
+        loop invariant emitted: \forall integer x; done <= x < next ==>
+            out[x] == \at(order[first + (j0 + (x - done) * p)], Pre);
+        loop assigns slot, next, m, out[done .. done + (size - 1 - j0) / p];
         loop variant end - slot;
     */
     do {
-        /*@ assert in_room: done <= \at(done, Pre) + (size - 1 - j0) / p; */
+        /*@ assert in_room: next <= done + (size - 1 - j0) / p; */
         /*@ assert read_old: \let d = first + (j0 + m * p); d == slot && order[d] == \at(order[d], Pre); */
-        out[done] = order[slot];
-        /*@ assert wrote_new: \let d = first + (j0 + (done - \at(done, Pre)) * p); out[done] == \at(order[d], Pre); */
-        /*@ assert wrote_old: \forall integer x; \at(done, Pre) <= x < done ==>
-                out[x] == \at(order[first + (j0 + (x - \at(done, Pre)) * p)], Pre); */
+        out[next] = order[slot];
+        /*@ assert wrote_new: \let d = first + (j0 + (next - done) * p); out[next] == \at(order[d], Pre); */
+        /*@ assert wrote_old: \forall integer x; done <= x < next ==>
+                out[x] == \at(order[first + (j0 + (x - done) * p)], Pre); */
         /*@ assert wrote_kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> order[d] == \at(order[d], Pre); */
-        done++;
+        next++;
+        /*@ assert no_wrap: slot + p < 4294967296; */
         slot += p;
         /*@ ghost m = m + 1; */
         /*@ assert next_slot: slot == first + (j0 + m * p); */
     } while (slot < end);
     /*@ assert all: m == cnt; */
-    return done;
+    return next;
 }
 
 /* Class k's processes due in minor cycle t, appended to out[] from index
@@ -605,9 +610,9 @@ static size_t collect_class(const struct bsched *s, uint32_t k, uint32_t top, ui
 {
     uint32_t period = period_of(k);
     uint32_t lead = s->class_lead[k];
-    size_t first = s->class_first[k];
-    size_t size = s->class_size[k];
-    size_t slot;
+    uint32_t first = s->class_first[k];
+    uint32_t size = s->class_size[k];
+    uint32_t slot;
     size_t next = done;
     /*@ ghost
       int64_t area = slots_area(s->pv, s->count, (int)k);
@@ -771,6 +776,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
 static uint32_t next_reversed(uint32_t reversed, uint32_t maxpv)
     /*@ ghost (uint32_t t) */
 {
+    uint32_t low = reversed; /* the counter's bits below `bit`, carried out one by one */
     uint32_t bit = period_of(maxpv) / 2u;
     /*@ ghost
       int e = (int)maxpv;
@@ -781,16 +787,16 @@ static uint32_t next_reversed(uint32_t reversed, uint32_t maxpv)
     */
     /*@ loop invariant e_range: 0 <= e <= maxpv;
         loop invariant bit_is: (e >= 1 ==> bit == pow2(e - 1)) && (e == 0 ==> bit == 0);
-        loop invariant low: reversed == rev(e, u) && 0 <= u;
+        loop invariant low: low == rev(e, u) && 0 <= u;
         loop invariant goal: rev(maxpv, t + 1) == rev(e, u + 1);
-        loop assigns reversed, bit, e, u;
+        loop assigns low, bit, e, u;
         loop variant bit;
     */
-    while (bit != 0u && reversed >= bit) {
+    while (bit != 0u && low >= bit) {
         /*@ ghost lemma_rev_carry(e, u); */
         /*@ assert odd: u % 2 == 1 && bit == pow2(e - 1); */
         /*@ assert next_goal: rev(e, u + 1) == rev(e - 1, u / 2 + 1); */
-        reversed -= bit;
+        low -= bit;
         bit /= 2u;
         /*@ ghost
           u = u / 2;
@@ -802,10 +808,10 @@ static uint32_t next_reversed(uint32_t reversed, uint32_t maxpv)
         lemma_rev_carry(e, u);
       }
     */
-    /*@ assert next_reversed: reversed + bit == rev(maxpv, t + 1); */
+    /*@ assert next_reversed: low + bit == rev(maxpv, t + 1); */
     /*@ ghost rev_mod_inv(); */
     /*@ assert next_mod: rev(maxpv, t + 1) == rev(maxpv, (t + 1) % pow2(maxpv)); */
-    return reversed + bit;
+    return low + bit;
 }
 
 /*@ requires valid_state: s == \null || \valid(s);

@@ -68,7 +68,7 @@ CBMC_ARGS_step           := N=$(CBMC_STEP_N) P=$(CBMC_STEP_P)
 CBMC_HARNESS_balance     := balance
 CBMC_ARGS_balance        := N=$(CBMC_N) P=$(CBMC_P)
 CBMC_HARNESS_major_cycle := major_cycle
-CBMC_ARGS_major_cycle    := N=5 P=3
+CBMC_ARGS_major_cycle    := N=4 P=3
 CBMC_HARNESS_init        := init
 CBMC_ARGS_init           := ORDERS=any N=6 P=3
 CBMC_HARNESS_errors      := errors
