@@ -517,7 +517,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
  * a small context (inside collect_due, every goal of the loop carried all of
  * collect_due's facts and timed out). */
 /*@ requires p_range: 1 <= p <= 2147483648;
-    requires walk_range: j0 < size && first + size <= BSCHED_MAX_PROCS && done <= 65535;
+    requires walk_range: j0 < size && first + size <= BSCHED_MAX_PROCS;
+    requires fits: done + (size - 1 - j0) / p < 65535;
     requires \valid_read(order + (0 .. BSCHED_MAX_PROCS - 1));
     requires room: \valid(out + (done .. done + (size - 1 - j0) / p));
     requires \separated(out + (done .. done + (size - 1 - j0) / p), order + (0 .. BSCHED_MAX_PROCS - 1));
@@ -534,7 +535,7 @@ static size_t emit_members(uint16_t *out, size_t done, const uint16_t *order,
      * "fast": on x86-64 the index then needs no zero extension. */
     uint_fast32_t slot = first + j0;
     uint_fast32_t end = first + size;
-    size_t next = done;
+    size_t next = done; /* below 65535 (fits): no wrap where size_t has 16 bits */
     /*@ ghost
       int64_t cnt = ((int64_t)size - 1 - (int64_t)j0) / (int64_t)p + 1;
       int64_t m = 0;

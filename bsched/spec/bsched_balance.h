@@ -232,7 +232,7 @@
   @/
   void lemma_hits(void)
   {
-    int x = 0;
+    int32_t x = 0; // not int: 2^31 - 1 must fit where int has 16 bits (-machdep x86_16)
     lemma_below_step();
     /@ loop invariant 0 <= x <= 2147483647;
        loop invariant \forall integer k, b, c, r; 0 <= k <= BSCHED_MAX_PV && b >= 0 &&
