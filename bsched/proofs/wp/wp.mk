@@ -40,19 +40,50 @@ WP_MACHDEP_FLAGS ?=
 export WHY3CONFIG := $(BSCHED_TOOLS)/why3-v5/why3.conf
 
 WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
-	-wp -wp-rte -wp-prover $(WP_PROVERS) -wp-timeout $(WP_TIMEOUT) \
+	-wp -wp-rte -wp-timeout $(WP_TIMEOUT) \
 	$(if $(filter-out 0,$(WP_STEPS)),-wp-steps $(WP_STEPS)) \
 	-wp-verbose 1 -wp-cache none $(WP_MACHDEP_FLAGS)
 
-# The full run is split in two Frama-C processes: WP generates its goals in one
-# thread, so one process would leave a core idle much of the time. Part A takes the library's code behind bsched_init and bsched_step; part B
-# everything else (bsched_due and the lemma functions), so a new function always
-# lands in B and none is left out.
+# The full run is split over Frama-C processes: WP generates its goals in one thread,
+# so one process would leave a core idle much of the time. Part A takes the library's
+# code behind bsched_init and bsched_step; part B everything else (bsched_due and the
+# lemma functions), so a new function always lands in B and none is left out; run ref
+# Fig. 7's reference engine; and the hinted runs below the slowest goals of A and B.
 WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,collect_due,collect_class,next_reversed
-WP_RUNS      = $(if $(WP_FCT),all,a b ref)
+WP_RUNS      = $(if $(WP_FCT),all,a b ref $(WP_HINT_RUNS))
 WP_SEL_all   = -wp-fct $(WP_FCT) -wp-par $(WP_PAR)
-WP_SEL_a     = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
-WP_SEL_b     = -wp-skip-fct $(WP_PART_A),bsched_run_cycle -wp-par $(WP_PAR)
+WP_SEL_a_all = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
+WP_SEL_b_all = -wp-skip-fct $(WP_PART_A),bsched_run_cycle -wp-par $(WP_PAR)
+WP_SEL_a     = $(WP_SEL_a_all) $(call wp_hints_left_out,a)
+WP_SEL_b     = $(WP_SEL_b_all) $(call wp_hints_left_out,b)
+
+# Prover hints. WP races the provers on each goal, so a goal costs up to three times
+# the CPU of its fastest proof, and the full run keeps both cores busy throughout
+# (measured 2026-11-24: 891 s, the winners' prover time 513 s). The slowest goals
+# (winners' 5 to 45 s; 292 s together) therefore run apart, each with only the prover
+# that won the race: WP_HINTS_<part>_<prover> lists property names whose goals in
+# part a or b go to run <part>-<prover> and are left out of the part's own run
+# (-wp-prop -name), so every goal is still proven once. A hinted run that leaves a
+# goal unproven is run again with all of WP_PROVERS: a stale hint costs time, never
+# the verdict. WP_HINTS=0 races every goal. Scoped runs (WP_FCT) use no hints.
+# The lists are property names (an assert's or invariant's label, an ensures' name):
+# make prove WP_HINTS=0 and the log's slowest "Valid (...)" lines tell which to list.
+WP_HINTS    ?= 1
+WP_HINTS_a_cvc4 := table_first sorted_slots same_table table ran_listed ran_exact_kept table_kept sorted_same kept_order
+WP_HINTS_a_cvc5 := same_first all listed
+WP_HINTS_b_cvc4 := ok_due_exact
+WP_HINTS_b_cvc5 := in_class_due by_member_due by_member_at
+wp_empty :=
+wp_space := $(wp_empty) $(wp_empty)
+wp_comma := ,
+wp_list   = $(subst $(wp_space),$(wp_comma),$(strip $(1)))
+WP_HINT_RUNS = $(if $(filter 1,$(WP_HINTS)),$(foreach p,a b,$(foreach v,cvc4 cvc5,$(if $(WP_HINTS_$(p)_$(v)),$(p)-$(v)))))
+# $(call wp_hints_left_out,PART): -wp-prop=-name,... for the part's hinted properties
+wp_hints_left_out = $(if $(filter $(1)-%,$(WP_HINT_RUNS)),-wp-prop=$(call wp_list,$(addprefix -,$(WP_HINTS_$(1)_cvc4) $(WP_HINTS_$(1)_cvc5))))
+$(foreach p,a b,$(foreach v,cvc4 cvc5,\
+    $(eval WP_SEL_$(p)-$(v) = $$(WP_SEL_$(p)_all) -wp-prop $$(call wp_list,$$(WP_HINTS_$(p)_$(v))))\
+    $(eval WP_PROVERS_$(p)-$(v) := $(v))\
+    $(eval WP_FILE_$(p)-$(v) := bsched/bsched.c)))
 # Run `ref`: Fig. 7's reference engine (bsched/ref/bsched_fig7.c, spec in
 # spec/bsched_fig7.h). Only its own functions: the shared lemma functions it
 # calls are the same text that runs a and b prove. WP_FILE: the file of a
@@ -74,15 +105,23 @@ WP_SOURCES  += bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/spec/bsc
 CHECKS += wp wp-negative
 .PHONY: prove check-wp check-wp-negative wp-calibrate
 
+# $(call wp_run,RUN,PROVERS): one Frama-C process, its log and JSON report in WP_OUT.
+wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(2) $(WP_SEL_$(1)) -wp-report-json $(WP_OUT)/wp-$(1).json \
+	$(WP_FILE_$(1)) > $(WP_OUT)/wp-$(1).log 2>&1
+
 # Runs WP, then gates on the report: any goal not proven, fewer than
 # WP_MIN_GOALS goals, or an axiom in the spec fails the target.
 prove:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_OUT)
 	@start=$$(date +%s); rc=0; pids=; \
-	$(foreach r,$(WP_RUNS),nice frama-c $(WP_FLAGS) $(WP_SEL_$(r)) -wp-report-json $(WP_OUT)/wp-$(r).json \
-	    $(WP_FILE_$(r)) > $(WP_OUT)/wp-$(r).log 2>&1 & pids="$$pids $$!";) \
+	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(or $(WP_PROVERS_$(r)),$(WP_PROVERS))) & pids="$$pids $$!";) \
 	for pid in $$pids; do wait $$pid || rc=$$?; done; \
+	$(foreach r,$(filter $(WP_HINT_RUNS),$(WP_RUNS)),if [ $$rc -eq 0 ] && \
+	    ! grep -Eq '^\[wp\] Proved goals: +([0-9]+) / \1$$' $(WP_OUT)/wp-$(r).log; then \
+	    echo "prove: $(WP_PROVERS_$(r)) alone left goals of run $(r) unproven (a stale hint in WP_HINTS_*); racing $(WP_PROVERS) on them"; \
+	    mv $(WP_OUT)/wp-$(r).log $(WP_OUT)/wp-$(r)-hinted.log; \
+	    $(call wp_run,$(r),$(WP_PROVERS)) || rc=$$?; fi;) \
 	cat $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).log) > $(WP_OUT)/wp.log; \
 	python3 bsched/proofs/wp/wp_report.py --merge $(WP_OUT)/wp.json \
 	    $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).json) || rc=1; \
@@ -117,8 +156,6 @@ check-wp:
 # closed form; the proof of the balance theorem must then fail where it ties the waits
 # of the schedule to the balanced residues (bsched_slots.h: member j of class k is due
 # iff rev_k(t mod 2^k) is its position). WP_FCT keeps this run to those functions.
-wp_empty :=
-wp_space := $(wp_empty) $(wp_empty)
 WP_MUTANT_FCT := $(subst $(wp_space),,lemma_slots_disjoint,lemma_slots_mod_sum, \
     lemma_slots_due,lemma_slots_init_wait,lemma_slots_slot,lemma_slots_all,lemma_slots_step, \
     lemma_slots_class,lemma_slots_by_class,reverse_bits)

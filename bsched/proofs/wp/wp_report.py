@@ -86,18 +86,28 @@ def logic_inventory(spec_files):
 
 def merge(out, inputs):
     """Merges the -wp-report-json files of split WP runs into one: counts add up."""
+    def add_counts(acc, by_prover):
+        for prover, counts in by_prover.items():
+            into = acc.setdefault(prover, {})
+            for key, value in counts.items():
+                into[key] = max(into.get(key, 0), value) if key == "rank" else into.get(key, 0) + value
+
     merged = {"wp:global": {}, "wp:functions": {}}
     for path in inputs:
         with open(path, encoding="utf-8") as f:
             part = json.load(f)
-        for prover, counts in part.get("wp:global", {}).items():
-            acc = merged["wp:global"].setdefault(prover, {})
-            for key, value in counts.items():
-                acc[key] = max(acc.get(key, 0), value) if key == "rank" else acc.get(key, 0) + value
+        add_counts(merged["wp:global"], part.get("wp:global", {}))
+        # A function's properties may be split over runs (the prover hints of wp.mk),
+        # but no property may be analysed twice; its totals (wp:section) add up.
         for func, goals in part.get("wp:functions", {}).items():
-            if func in merged["wp:functions"]:
-                sys.exit("wp_report: function %s analysed by two WP runs" % func)
-            merged["wp:functions"][func] = goals
+            acc = merged["wp:functions"].setdefault(func, {})
+            for prop, counts in goals.items():
+                if prop == "wp:section":
+                    add_counts(acc.setdefault(prop, {}), counts)
+                elif prop in acc:
+                    sys.exit("wp_report: %s of %s analysed by two WP runs" % (prop, func))
+                else:
+                    acc[prop] = counts
     with open(out, "w", encoding="utf-8") as f:
         json.dump(merged, f, indent=1)
 
