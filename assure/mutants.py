@@ -516,8 +516,9 @@ def stage_wp(work, m):
         return False, 'not in the WP proof (bsched/proofs/README.md, Not proven)'
     d, path = write_mutant(work, m)
     log = os.path.join(d, 'wp.log')
-    flags, why3config = make_vars('WP_FLAGS', 'WHY3CONFIG')
-    cmd = ' '.join(LOCK) + ' frama-c %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (flags, m['func'], path, log)
+    flags, provers, why3config = make_vars('WP_FLAGS', 'WP_PROVERS', 'WHY3CONFIG')
+    cmd = ' '.join(LOCK) + ' frama-c %s -wp-prover %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (
+        flags, provers, m['func'], path, log)
     subprocess.run(cmd, shell=True, cwd=ROOT, env=dict(os.environ, WHY3CONFIG=why3config))
     text = open(log).read()
     g = re.search(r'Proved goals:\s*(\d+)\s*/\s*(\d+)', text)
@@ -689,7 +690,7 @@ def main():
     for t in tokenize(src):
         size[t.func] = size.get(t.func, 0) + 1
     for st, fn in (('cbmc', cached('cbmc', stage_cbmc, lambda: json.dumps(CBMC_RUNS))),
-                   ('wp', cached('wp', stage_wp, lambda: make_vars('WP_FLAGS')[0]))):
+                   ('wp', cached('wp', stage_wp, lambda: ' '.join(make_vars('WP_FLAGS', 'WP_PROVERS'))))):
         if st not in stages:
             continue
         t1 = time.time()
