@@ -69,6 +69,8 @@ WP_SEL_b     = $(WP_SEL_b_all) $(call wp_hints_left_out,b)
 # The lists are property names (an assert's or invariant's label, an ensures' name):
 # make prove WP_HINTS=0 and the log's slowest "Valid (...)" lines tell which to list.
 WP_HINTS    ?= 1
+# The provers a hint may name (the suffixes of the WP_HINTS_<part>_<prover> lists).
+WP_HINT_PROVERS := cvc4 cvc5
 WP_HINTS_a_cvc4 := table_first sorted_slots same_table table ran_listed ran_exact_kept table_kept sorted_same kept_order
 WP_HINTS_a_cvc5 := same_first all listed
 WP_HINTS_b_cvc4 := ok_due_exact
@@ -77,10 +79,10 @@ wp_empty :=
 wp_space := $(wp_empty) $(wp_empty)
 wp_comma := ,
 wp_list   = $(subst $(wp_space),$(wp_comma),$(strip $(1)))
-WP_HINT_RUNS = $(if $(filter 1,$(WP_HINTS)),$(foreach p,a b,$(foreach v,cvc4 cvc5,$(if $(WP_HINTS_$(p)_$(v)),$(p)-$(v)))))
+WP_HINT_RUNS = $(if $(filter 1,$(WP_HINTS)),$(foreach p,a b,$(foreach v,$(WP_HINT_PROVERS),$(if $(WP_HINTS_$(p)_$(v)),$(p)-$(v)))))
 # $(call wp_hints_left_out,PART): -wp-prop=-name,... for the part's hinted properties
-wp_hints_left_out = $(if $(filter $(1)-%,$(WP_HINT_RUNS)),-wp-prop=$(call wp_list,$(addprefix -,$(WP_HINTS_$(1)_cvc4) $(WP_HINTS_$(1)_cvc5))))
-$(foreach p,a b,$(foreach v,cvc4 cvc5,\
+wp_hints_left_out = $(if $(filter $(1)-%,$(WP_HINT_RUNS)),-wp-prop=$(call wp_list,$(addprefix -,$(foreach v,$(WP_HINT_PROVERS),$(WP_HINTS_$(1)_$(v))))))
+$(foreach p,a b,$(foreach v,$(WP_HINT_PROVERS),\
     $(eval WP_SEL_$(p)-$(v) = $$(WP_SEL_$(p)_all) -wp-prop $$(call wp_list,$$(WP_HINTS_$(p)_$(v))))\
     $(eval WP_PROVERS_$(p)-$(v) := $(v))\
     $(eval WP_FILE_$(p)-$(v) := bsched/bsched.c)))
