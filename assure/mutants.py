@@ -504,6 +504,15 @@ def wp_failures(text):
     return failed
 
 
+WP_PAR = 2   # provers at a time in the WP stage (--proof-jobs)
+
+# What the WP stage takes from make (wp.mk): its flags, provers and both step limits (part
+# of the cache key), and where why3.conf lies (not: why3-config.sh, which writes it, is in
+# the digest of the stage's inputs).
+WP_VERDICT_VARS = ('WP_FLAGS', 'WP_PROVERS', 'WP_STEPS_Z3')
+WP_STAGE_VARS = WP_VERDICT_VARS + ('WHY3CONFIG',)
+
+
 # Functions make prove leaves out (-wp-skip-fct in wp.mk): WP says nothing about them.
 WP_NOT_PROVEN = {'bsched_run_cycle'}
 
@@ -516,10 +525,13 @@ def stage_wp(work, m):
         return False, 'not in the WP proof (bsched/proofs/README.md, Not proven)'
     d, path = write_mutant(work, m)
     log = os.path.join(d, 'wp.log')
-    flags, provers, why3config = make_vars('WP_FLAGS', 'WP_PROVERS', 'WHY3CONFIG')
-    cmd = ' '.join(LOCK) + ' frama-c %s -wp-prover %s -wp-par 2 -wp-fct %s %s > %s 2>&1' % (
-        flags, provers, m['func'], path, log)
-    subprocess.run(cmd, shell=True, cwd=ROOT, env=dict(os.environ, WHY3CONFIG=why3config))
+    flags, provers, steps_z3, why3config = make_vars(*WP_STAGE_VARS)
+    cmd = ' '.join(LOCK) + ' frama-c %s -wp-prover %s -wp-par %d -wp-fct %s %s > %s 2>&1' % (
+        flags, provers, WP_PAR, m['func'], path, log)
+    # Z3's step limit reaches it through the environment (prover-steps.sh); make exports it
+    # to its recipes, but this script may be run by hand: it is set here either way.
+    subprocess.run(cmd, shell=True, cwd=ROOT,
+                   env=dict(os.environ, WHY3CONFIG=why3config, WP_STEPS_Z3=steps_z3))
     text = open(log).read()
     g = re.search(r'Proved goals:\s*(\d+)\s*/\s*(\d+)', text)
     if not g:
@@ -550,6 +562,9 @@ CACHE = os.path.join(ROOT, 'build', 'mutants', 'cache')
 
 
 PROOF_INPUTS = {'cbmc': ('bsched/spec', 'bsched/proofs/cbmc'), 'wp': ('bsched/spec', 'bsched/proofs/wp')}
+# wp.mk reaches the WP stage only through the make variables it sets (WP_STAGE_VARS, part
+# of the stage's settings): its other lines (make prove's runs and hints) change no verdict.
+PROOF_INPUTS_SKIP = {'wp': ('wp.mk',)}
 
 
 def proof_inputs_digest(stage):
@@ -557,6 +572,8 @@ def proof_inputs_digest(stage):
     for d in PROOF_INPUTS[stage]:
         for base, _, files in sorted(os.walk(os.path.join(ROOT, d))):
             for f in sorted(files):
+                if f in PROOF_INPUTS_SKIP.get(stage, ()):
+                    continue
                 if f.endswith(('.c', '.h', '.mk', '.sh', '.drv', 'Makefile', '.common')):
                     h.update(f.encode())
                     h.update(open(os.path.join(base, f), 'rb').read())
@@ -601,7 +618,8 @@ def main():
     ap.add_argument('--sample', type=int, default=0, help='only N mutants, a fixed sample by key hash')
     ap.add_argument('--stages', default='unit,cbmc,wp')
     ap.add_argument('--jobs', type=int, default=2)
-    ap.add_argument('--proof-jobs', type=int, default=2, help='mutants at a time in the CBMC and WP stages')
+    ap.add_argument('--proof-jobs', type=int, default=2,
+                    help='CBMC: mutants at a time; WP: one mutant at a time, this many provers (-wp-par)')
     ap.add_argument('--out', default=os.path.join(ROOT, 'build/mutants'))
     ap.add_argument('--suite', help='write build/results/SUITE.txt')
     ap.add_argument('--only-survivors-of', metavar='REPORT',
@@ -611,6 +629,8 @@ def main():
                     help='only the mutants with an entry in FILE (key || reason), e.g. the survivors')
     a = ap.parse_args()
     a.out = os.path.abspath(a.out)    # the CBMC stage runs make -C in each harness folder
+    global WP_PAR
+    WP_PAR = a.proof_jobs
     if a.cmd == 'tests':   # the unit test programs and what they need (assure/bigendian.sh)
         for name, path, incs, extra in test_programs():
             print('%s|%s|%s|%s' % (name, os.path.relpath(path, ROOT), ' '.join(incs),
@@ -679,10 +699,13 @@ def main():
                 time.sleep(5)
         timing['lock wait'] = time.time() - t1
         LOCK = []
-    # Each proof stage gets what the cheaper ones left, PROOF_JOBS mutants at a time
-    # (one heavy lock for all), smaller functions first; with MUTANTS_STAGE_DEADLINE
-    # (epoch seconds) a stage starts no new mutant after it, and those left are
-    # reported as not run (the cache keeps what was done: a re-run goes on from there).
+    # Each proof stage gets what the cheaper ones left (one heavy lock for all), smaller
+    # functions first. CBMC (one process a mutant) runs PROOF_JOBS mutants side by side;
+    # WP runs one mutant at a time with PROOF_JOBS provers: two mutants side by side would
+    # put twice as many provers on the cores, and a goal that a prover loses only to the
+    # wall-clock backstop is no verdict (it was so for two bsched_init mutants). With
+    # MUTANTS_STAGE_DEADLINE (epoch seconds) a stage starts no new mutant after it, and those
+    # left are reported as not run (the cache keeps what was done: a re-run goes on from there).
     deadline = float(os.environ.get('MUTANTS_STAGE_DEADLINE', '0'))
     not_run = {}
     errors = {}
@@ -690,7 +713,7 @@ def main():
     for t in tokenize(src):
         size[t.func] = size.get(t.func, 0) + 1
     for st, fn in (('cbmc', cached('cbmc', stage_cbmc, lambda: json.dumps(CBMC_RUNS))),
-                   ('wp', cached('wp', stage_wp, lambda: ' '.join(make_vars('WP_FLAGS', 'WP_PROVERS'))))):
+                   ('wp', cached('wp', stage_wp, lambda: ' '.join(make_vars(*WP_VERDICT_VARS))))):
         if st not in stages:
             continue
         t1 = time.time()
@@ -705,7 +728,7 @@ def main():
                                                        'killed' if killed else 'survived',
                                                        m['line'], m['key'][:90], w[:160]), flush=True)
             return m, killed, w
-        with cf.ThreadPoolExecutor(a.proof_jobs) as ex:
+        with cf.ThreadPoolExecutor(1 if st == 'wp' else a.proof_jobs) as ex:
             for m, killed, w in ex.map(one, todo):
                 if killed is None:
                     not_run[m['key']] = st
