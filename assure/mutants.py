@@ -562,7 +562,7 @@ CACHE = os.path.join(ROOT, 'build', 'mutants', 'cache')
 
 
 PROOF_INPUTS = {'cbmc': ('bsched/spec', 'bsched/proofs/cbmc'), 'wp': ('bsched/spec', 'bsched/proofs/wp')}
-# wp.mk reaches the WP stage only through the make variables it sets (WP_STAGE_VARS, part
+# wp.mk reaches the WP stage only through the make variables it sets (WP_VERDICT_VARS, part
 # of the stage's settings): its other lines (make prove's runs and hints) change no verdict.
 PROOF_INPUTS_SKIP = {'wp': ('wp.mk',)}
 
