@@ -41,3 +41,16 @@ bench:
 	@flock /tmp/bsched-heavy.lock python3 bsched/bench/bench.py --host $(BENCH_DIR)/bsched-bench \
 	    --elf $(BENCH_DIR)/bench-cpu32.elf --qemu $(QEMU_M68K) --cycles $(BENCH_CYCLES) \
 	    --out $(BENCH_DIR)/bench.txt
+
+# make bench-prototype [PROTOTYPE=v7]: make bench on a design prototype of the
+# next minor-cycle layout (bsched/bench/prototype/README.md: unproven, measured
+# only), applied as a patch to a copy of the tree in build/prototype-NAME/.
+# Writes build/bench/prototype-NAME.txt, with the text size of its bsched.o
+# (CROSS_CFLAGS: -Os, CPU32, default capacity). Not part of make check.
+PROTOTYPE ?= v7
+.PHONY: bench-prototype
+bench-prototype:
+	@$(SETUP) base m68k qemu
+	@mkdir -p $(BENCH_DIR)
+	@CROSS_CC='$(CROSS_CC)' CROSS_CFLAGS='$(CROSS_CFLAGS)' \
+	    bsched/bench/prototype/run.sh $(PROTOTYPE) $(BUILD) $(QEMU_M68K)
