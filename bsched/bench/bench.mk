@@ -43,8 +43,8 @@ bench:
 	    --out $(BENCH_DIR)/bench.txt
 
 # make bench-prototype [PROTOTYPE=v7]: make bench on a design prototype of the
-# next minor-cycle layout (bsched/bench/prototype/README.md: unproven, measured
-# only), applied as a patch to a copy of the tree in build/prototype-NAME/.
+# next minor-cycle layout (bsched/bench/prototype/README.md: measured, at most
+# partly proven), applied as a patch to a copy of the tree in build/prototype-NAME/.
 # Writes build/bench/prototype-NAME.txt, with the text size of its bsched.o
 # (CROSS_CFLAGS: -Os, CPU32, default capacity). Not part of make check.
 PROTOTYPE ?= v7
