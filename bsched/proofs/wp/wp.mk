@@ -6,8 +6,7 @@
 
 WP_DIR      := $(BUILD)/wp
 WP_SPEC     := $(addprefix bsched/spec/,bsched_logic.h bsched_lemmas.h bsched_order.h \
-               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h \
-               bsched_word.h)
+               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h)
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
 # WP starts the provers side by side on each goal and keeps the first proof (measured
 # 2026-11-24, 2669 goals: Qed 1549, CVC4 671, CVC5 260, Z3 with bounded instantiation
