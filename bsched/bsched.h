@@ -47,7 +47,7 @@
 /* The scheduler state. Owned by the caller, written only by bsched_init,
  * bsched_step and bsched_run_cycle; every field may be read.
  * Per process: 9 bytes (pv, offset, order, ran); per priority class k = 0..31
- * (indexed by k, empty classes too): 8 bytes. Fig. 7's waits are not stored:
+ * (indexed by k, empty classes too): 16 bytes. Fig. 7's waits are not stored:
  * bsched_wait computes one on demand. */
 struct bsched {
     uint16_t count;   /* number of processes, 1..BSCHED_MAX_PROCS */
@@ -59,12 +59,18 @@ struct bsched {
     uint32_t reversed;   /* cycle with its low maxpv bits reversed: rev_maxpv(cycle) */
     /* Class k (the processes with pv == k, in execution order) occupies
      * order[class_first[k] .. class_first[k] + class_size[k] - 1]; its member j
-     * has offset rev_k((s_k + j) mod 2^k), s_k Fig. 6's start, and
-     * class_lead[k] = 2^k - s_k, so member j runs in cycle t iff
-     * j = rev_k(t mod 2^k) + class_lead[k] (mod 2^k). */
-    uint32_t class_lead[BSCHED_MAX_PV + 1];
-    uint16_t class_first[BSCHED_MAX_PV + 1];
-    uint16_t class_size[BSCHED_MAX_PV + 1];
+     * has offset rev_k((s_k + j) mod 2^k), s_k Fig. 6's start, so member j runs
+     * in cycle t iff j = rev_k(t mod 2^k) - s_k (mod 2^k). bsched_step finds that
+     * j with an add, a mask and a compare per class, on 31-bit words whose top k
+     * bits are the class's residues: class_key[k] = ((2^k - s_k) mod 2^k) * 2^(31-k)
+     * and class_limit[k] = min(c_k, 2^k) * 2^(31-k), c_k the class's size. With
+     * W = rev_maxpv(cycle) * 2^(31-maxpv), x = (W + class_key[k]) mod 2^31 (no
+     * 32-bit wrap) has j in its top k bits, and x >= class_limit[k] means j >= c_k:
+     * no member of the class is due. */
+    uint32_t class_key[BSCHED_MAX_PV + 1];
+    uint32_t class_limit[BSCHED_MAX_PV + 1];
+    uint32_t class_first[BSCHED_MAX_PV + 1];
+    uint32_t class_size[BSCHED_MAX_PV + 1];
     uint8_t  pv[BSCHED_MAX_PROCS];     /* priority values, input order */
     uint32_t offset[BSCHED_MAX_PROCS]; /* initial waits of Fig. 6, input order: process i
                                           runs in the cycles t with t mod 2^pv_i == offset_i */

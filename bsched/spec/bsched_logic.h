@@ -145,6 +145,14 @@
       \forall integer i; 0 <= i < s->count ==>
           s->offset[i] == init_wait{L}(&s->pv[0], s->count, i);
 
+  // Class k's residue test on 31-bit words (bsched.h): its key is
+  // (2^31 - s_k 2^(31-k)) mod 2^31 = ((2^k - s_k) mod 2^k) 2^(31-k) and its limit min(c_k, 2^k) 2^(31-k)
+  // (s_k Fig. 6's start, c_k the class's size); both at most 2^31.
+  logic integer class_key_of(integer start, integer k) =
+      (2147483648 - start * pow2(31 - k)) % 2147483648;
+  logic integer class_limit_of(integer size, integer k) =
+      (size < pow2(k) ? size : pow2(k)) * pow2(31 - k);
+
   // How many of the slots order[0 .. d-1] hold a process due in cycle t
   // (t = offset mod 2^pv): the processes bsched_step finds due, in its order.
   logic integer due_slots{L}(struct bsched *s, integer t, integer d) =
@@ -153,15 +161,17 @@
                (t % pow2(s->pv[s->order[d - 1]]) == s->offset[s->order[d - 1]] ? 1 : 0);
 
   // The class table of bsched_step: class k occupies the slots class_first[k] ..
-  // class_first[k] + class_size[k] - 1 of order[], and class_lead[k] = 2^k - s_k;
-  // every class in use lies between minpv and maxpv.
+  // class_first[k] + class_size[k] - 1 of order[]; class_key[k] and
+  // class_limit[k] are its residue test on 31-bit words (class_key_of,
+  // class_limit_of); every class in use lies between minpv and maxpv.
   predicate class_table{L}(struct bsched *s) =
       s->minpv <= s->maxpv &&
       (\forall integer i; 0 <= i < s->count ==> s->minpv <= s->pv[i]) &&
       (\forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
            s->class_first[k] == class_first{L}(&s->pv[0], s->count, k) &&
            s->class_size[k] == class_count{L}(&s->pv[0], s->count, k) &&
-           s->class_lead[k] == pow2(k) - class_start{L}(&s->pv[0], s->count, k));
+           s->class_key[k] == class_key_of(class_start{L}(&s->pv[0], s->count, k), k) &&
+           s->class_limit[k] == class_limit_of(class_count{L}(&s->pv[0], s->count, k), k));
 
   // Everything bsched_init establishes and bsched_step keeps: the state is well
   // formed, sorted and in closed form, perfect is the fold, the class table

@@ -149,18 +149,23 @@ static void check_against_model(const uint8_t *pv, size_t n)
         assert_true(sched.offset[i] < ((uint64_t)1 << pv[i]));
     }
     assert_int_equal(bsched_wait(&sched, (uint16_t)n), BSCHED_ERR_INDEX);
-    /* The class table: where each class sits in order[], and 2^k - s_k. */
+    /* The class table: where each class sits in order[], and its residue test on
+     * 31-bit words: key ((2^k - s_k) mod 2^k) 2^(31-k), limit min(c_k, 2^k) 2^(31-k). */
     assert_int_equal(sched.minpv, m.minpv);
     assert_int_equal(sched.reversed, 0);
     for (c = 0; c <= m.maxpv; c++) {
+        uint64_t period = (uint64_t)1 << c;
+        uint64_t in_use = m.size[c] < period ? m.size[c] : period;
         assert_int_equal(sched.class_size[c], m.size[c]);
+        assert_int_equal(sched.class_limit[c], in_use << (31 - c));
         if (m.size[c] != 0) {
             assert_int_equal(sched.class_first[c], m.first[c]);
-            assert_int_equal(sched.class_lead[c], ((uint64_t)1 << c) - m.start[c]);
+            assert_int_equal(sched.class_key[c], ((period - m.start[c]) % period) << (31 - c));
         }
     }
     for (; c <= BSCHED_MAX_PV; c++) {
         assert_int_equal(sched.class_size[c], 0);
+        assert_int_equal(sched.class_limit[c], 0);
     }
     initial = sched;
 

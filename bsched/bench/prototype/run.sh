@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make bench-prototype: `make bench` on a design prototype of the minor cycle.
 #   CROSS_CC=... CROSS_CFLAGS=... run.sh NAME BUILD QEMU
-# Copies the tracked files of this checkout to BUILD/prototype-NAME/, applies
+# Copies the tree of the prototypes' base commit to BUILD/prototype-NAME/, applies
 # bsched/bench/prototype/step-NAME.patch there and runs `make bench` in that copy
 # (its own build/ folder, this checkout's QEMU). The copy is thrown away and
 # rebuilt on every run; the library and the firmware never see the patch.
@@ -15,12 +15,18 @@ if [ ! -f "$patch_file" ]; then
     echo "bench-prototype: no prototype '$name' (have: $(cd "$root/bsched/bench/prototype" && ls step-*.patch | sed 's/^step-//; s/\.patch$//' | tr '\n' ' '))" >&2
     exit 2
 fi
+# The patches are against the tree before v11 landed in bsched.c (README.md here):
+# the copy is that commit's tree, not the checkout's.
+base=${PROTOTYPE_BASE:-ea02446}
 tree=$build/prototype-$name
 rm -rf "$tree"
 mkdir -p "$tree"
-(cd "$root" && git ls-files -z | xargs -0 cp --parents -t "$tree")
+if ! git -C "$root" archive "$base" | tar -x -C "$tree"; then
+    echo "bench-prototype: commit $base (the prototypes' base) is not in this clone's history" >&2
+    exit 1
+fi
 if ! patch -d "$tree" -p1 --quiet --forward < "$patch_file"; then
-    echo "bench-prototype: $patch_file no longer applies to bsched/bsched.c; the prototype was measured on the tree named in bsched/bench/prototype/README.md" >&2
+    echo "bench-prototype: $patch_file does not apply to bsched/bsched.c of $base" >&2
     exit 1
 fi
 make -C "$tree" --no-print-directory bench BUILD="$tree/build" QEMU_M68K="$qemu"

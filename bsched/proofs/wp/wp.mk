@@ -6,7 +6,8 @@
 
 WP_DIR      := $(BUILD)/wp
 WP_SPEC     := $(addprefix bsched/spec/,bsched_logic.h bsched_lemmas.h bsched_order.h \
-               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h)
+               bsched_fold.h bsched_rev.h bsched_balance.h bsched_slots.h bsched_step.h \
+               bsched_word.h)
 WP_SOURCES  := bsched/bsched.c bsched/bsched.h $(WP_SPEC)
 # WP starts the provers side by side on each goal and keeps the first proof (measured
 # 2026-11-24, 2669 goals: Qed 1549, CVC4 671, CVC5 260, Z3 with bounded instantiation
@@ -20,7 +21,7 @@ WP_PROVERS  ?= cvc4,z3-qi,cvc5
 # A goal cut by steps is reported as "Step limit" by all three (why3-config.sh). The
 # wall-clock timeout is only a backstop against a prover that hangs: Why3 kills a
 # step-limited call after 2 x WP_TIMEOUT + 1 s and reports Timeout from 0.9 x WP_TIMEOUT.
-WP_STEPS    ?= 2200000
+WP_STEPS    ?= 2400000
 export WP_STEPS_Z3 ?= 13000000
 WP_TIMEOUT  ?= 600
 # Prover jobs per Frama-C process: prover start-up, not CPU, bounds a run.
@@ -71,8 +72,9 @@ WP_SEL_b     = $(WP_SEL_b_all) $(call wp_hints_left_out,b)
 WP_HINTS    ?= 1
 # The provers a hint may name (the suffixes of the WP_HINTS_<part>_<prover> lists).
 WP_HINT_PROVERS := cvc4 cvc5
-WP_HINTS_a_cvc4 := table_first sorted_slots same_table table ran_listed ran_exact_kept table_kept sorted_same kept_order
-WP_HINTS_a_cvc5 := same_first all listed
+WP_HINTS_a_cvc4 := table_first sorted_slots same_table table ran_listed ran_exact_kept table_kept sorted_same kept_order \
+                   ok_maxpv listed_due table_size wf_kept listed_next_int table_key due_listed same_count
+WP_HINTS_a_cvc5 := same_first all listed ok_closed_form j0_is
 WP_HINTS_b_cvc4 := ok_due_exact
 WP_HINTS_b_cvc5 := in_class_due by_member_due by_member_at
 wp_empty :=

@@ -95,6 +95,22 @@ static uint32_t proof_mask(uint32_t pv)
     return ((uint32_t)1u << pv) - 1u;
 }
 
+/* The residue test's key of a class with start s_k (bsched.h): ((2^k - s_k) mod 2^k)
+ * 2^(31-k), in 64-bit arithmetic (the library computes it differently, in 32 bits). */
+static uint32_t proof_class_key(uint32_t start, uint32_t pv)
+{
+    uint64_t period = (uint64_t)1u << pv;
+    return (uint32_t)(((period - start) % period) << (31u - pv));
+}
+
+/* The residue test's limit of a class of `size` members: min(size, 2^k) 2^(31-k). */
+static uint32_t proof_class_limit(uint32_t size, uint32_t pv)
+{
+    uint64_t period = (uint64_t)1u << pv;
+    uint64_t in_use = size < period ? size : period;
+    return (uint32_t)(in_use << (31u - pv));
+}
+
 /* (w - t) mod 2^pv for w < 2^pv, without wrapping: the wait the periodicity
  * invariant prescribes at the start of minor cycle t. */
 static uint32_t proof_wait_at(uint32_t w, uint32_t pv, uint32_t t)

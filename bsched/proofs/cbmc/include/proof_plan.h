@@ -46,10 +46,11 @@ static void proof_plan_at(struct bsched *s, const struct proof_set *set, uint32_
     s->cycle = t;
     s->reversed = proof_reverse_bits(t, set->maxpv);
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        uint32_t start = nondet_uint32(); /* an empty class's s_k: any, 0 <= s_k < 2^k */
+        __CPROVER_assume(start <= proof_mask(k));
         s->class_first[k] = nondet_uint16();
         s->class_size[k] = 0u;
-        s->class_lead[k] = nondet_uint32();
-        __CPROVER_assume(s->class_lead[k] <= ((uint32_t)1u << k)); /* 2^k - s_k, 0 <= s_k < 2^k */
+        s->class_key[k] = proof_class_key(start, k);
     }
     for (i = 0u; i < PROOF_N; i++) {
         uint32_t pv = set->pv[i];
@@ -62,7 +63,7 @@ static void proof_plan_at(struct bsched *s, const struct proof_set *set, uint32_
                 /* The first member of class pv: B_k mod 2^k, B_k = A 2^k. */
                 uint32_t start = (area >> (PROOF_P - pv)) & proof_mask(pv);
                 s->class_first[pv] = (uint16_t)i;
-                s->class_lead[pv] = proof_mask(pv) + 1u - start;
+                s->class_key[pv] = proof_class_key(start, pv);
             }
             s->class_size[pv]++;
             if (pv < minpv) {
@@ -70,6 +71,9 @@ static void proof_plan_at(struct bsched *s, const struct proof_set *set, uint32_
             }
             area += PROOF_UNIT >> pv;
         }
+    }
+    for (k = 0u; k <= BSCHED_MAX_PV; k++) {
+        s->class_limit[k] = proof_class_limit(s->class_size[k], k);
     }
     s->minpv = (uint8_t)minpv;
 }
@@ -85,7 +89,7 @@ static int proof_plan_next_ok(const struct bsched *s, const struct bsched *befor
              s->minpv == before->minpv && s->perfect == before->perfect;
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
         ok = ok && s->class_first[k] == before->class_first[k] &&
-             s->class_size[k] == before->class_size[k] && s->class_lead[k] == before->class_lead[k];
+             s->class_size[k] == before->class_size[k] && s->class_key[k] == before->class_key[k] && s->class_limit[k] == before->class_limit[k];
     }
     return ok;
 }

@@ -16,7 +16,8 @@
  *            rev_k(offset) = 2^k A mod 2^k. This is the closed form the balance
  *            theorem rests on (harness `balance`), stated without Fig. 6's
  *            start/slots bookkeeping; and at the first member of each class
- *            k: class_first[k] = a, class_lead[k] = 2^k - (2^k A mod 2^k).
+ *            k: class_first[k] = a, class_key[k] = ((2^k - s_k) mod 2^k) 2^(31-k) with
+ *            s_k = 2^k A mod 2^k; and class_limit[k] = min(c_k, 2^k) 2^(31-k).
  *
  * PROOF_PARTS (a bit set of the parts, default all) selects what one CBMC run
  * asserts. One SAT instance with all three parts is much harder than the three
@@ -118,10 +119,10 @@ void harness(void)
 #endif
             k = set.pv[p];
             if (a == 0u || set.pv[s.order[a - 1u]] != k) {
-                /* the first member of class k: where the class starts, and 2^k - s_k */
+                /* the first member of class k: where the class starts, and its key from s_k */
                 CHECK(PART_OFFSETS, s.class_first[k] == a, "init: class_first is the class's first slot");
-                CHECK(PART_OFFSETS, s.class_lead[k] == proof_mask(k) + 1u - ((before >> (PROOF_P - k)) & proof_mask(k)),
-                      "init: class_lead = 2^k - (2^k A mod 2^k)");
+                CHECK(PART_OFFSETS, s.class_key[k] == proof_class_key((before >> (PROOF_P - k)) & proof_mask(k), k),
+                      "init: class_key = ((2^k - s_k) mod 2^k) 2^(31-k), s_k = 2^k A mod 2^k");
             }
             /* A * 2^k is an integer: before is a multiple of 2^(P - k) */
             CHECK(PART_OFFSETS, (before & proof_mask(PROOF_P - k)) == 0u,
@@ -135,5 +136,7 @@ void harness(void)
     CHECK(PART_STATE, s.minpv == minpv, "init: minpv is the smallest priority value");
     for (k = 0u; k <= BSCHED_MAX_PV; k++) {
         CHECK(PART_STATE, s.class_size[k] == sizes[k], "init: class_size is the class's number of members");
+        CHECK(PART_STATE, s.class_limit[k] == proof_class_limit(sizes[k], k),
+              "init: class_limit = min(c_k, 2^k) 2^(31-k)");
     }
 }
