@@ -17,7 +17,9 @@
 #ifndef BSCHED_SPEC_WORD_H
 #define BSCHED_SPEC_WORD_H
 
-/* P A == 2^31 for every class, and the facts about 2^k the word lemmas use. */
+/* P A == 2^31 for every class, and the facts about 2^k the word lemmas use.
+ * Each step takes its product from lemma_pow2_split(k + 1, 31): doubling one
+ * factor and halving the other in the invariant was not proven (2026-11-27). */
 /*@ ghost
   /@ assigns \nothing;
      ensures split_31: \forall integer k; 0 <= k <= BSCHED_MAX_PV ==>
