@@ -190,7 +190,10 @@
  * limit, x = W + key is below 2^32, and x mod 2^31 carries the first due
  * member j0 in its top k bits and is below the limit iff j0 < size. The
  * powers come in as parameters pk = 2^k and a = 2^(31-k): ghost code cannot
- * compute pow2. */
+ * compute pow2. The terms of the division by 2^31 are ghost values x, q, r of
+ * their own, each shown not to wrap: passed as expressions, their uint64_t
+ * conversions stayed in the call's precondition, which under -machdep x86_16
+ * no prover closed. */
 /*@ ghost
   /@ requires k_range: 0 <= k <= BSCHED_MAX_PV && pk == pow2(k) && a == pow2(31 - k);
      requires word: w == y * a + low && 0 <= low < a && 0 <= y < pk;
@@ -225,7 +228,14 @@
     /@ assert x_assoc: (pk * ((y + lead) / pk)) * a == (pk * a) * ((y + lead) / pk); @/
     /@ assert x_split: w + key == 2147483648 * ((y + lead) / pk) + (j0 * a + low); @/
     word_j0_range(pk, a, j0, low);
-    lemma_div_unique(w + key, 2147483648, (y + lead) / pk, j0 * a + low);
+    uint64_t x = w + key;
+    /@ assert x_is: x == w + key; @/
+    uint64_t q = (y + lead) / pk;
+    /@ assert q_is: q == (y + lead) / pk; @/
+    uint64_t r = j0 * a + low;
+    /@ assert r_is: r == j0 * a + low && 0 <= r < 2147483648; @/
+    /@ assert x_qr: x == 2147483648 * q + r; @/
+    lemma_div_unique(x, 2147483648, q, r);
     /@ assert y_is: (w + key) % 2147483648 == j0 * a + low; @/
     lemma_div_unique(j0 * a + low, a, j0, low);
     /@ assert limit_is: limit == (size < pk ? size : pk) * a; @/

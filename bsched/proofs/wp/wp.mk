@@ -2,6 +2,7 @@
 #   make prove                 every goal, gated on the report (build/wp/)
 #   make check-wp              the same as a check suite
 #   make check-wp-negative     the mutant (-DBSCHED_MUTANT_NO_REVERSE) must fail
+#   make wp-session            race every goal and record its prover (session.tsv)
 # Deterministic: fixed prover list, timeout, memory limit (why3.conf) and -wp-par.
 
 WP_DIR      := $(BUILD)/wp
@@ -49,45 +50,29 @@ WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 # so one process would leave a core idle much of the time. Part A takes the library's
 # code behind bsched_init and bsched_step; part B everything else (bsched_due and the
 # lemma functions), so a new function always lands in B and none is left out; run ref
-# Fig. 7's reference engine; and the hinted runs below the slowest goals of A and B.
+# Fig. 7's reference engine.
 WP_PART_A   := bsched_init,place_processes,plan_classes,perfect_load,reverse_bits,period_of,plausible_state,bsched_step,collect_due,collect_class,next_reversed
-WP_RUNS      = $(if $(WP_FCT),all,a b ref $(WP_HINT_RUNS))
+WP_RUNS      = $(if $(WP_FCT),all,a b ref)
 WP_SEL_all   = -wp-fct $(WP_FCT) -wp-par $(WP_PAR)
-WP_SEL_a_all = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
-WP_SEL_b_all = -wp-skip-fct $(WP_PART_A),bsched_run_cycle -wp-par $(WP_PAR)
-WP_SEL_a     = $(WP_SEL_a_all) $(call wp_hints_left_out,a)
-WP_SEL_b     = $(WP_SEL_b_all) $(call wp_hints_left_out,b)
+WP_SEL_a     = -wp-fct $(WP_PART_A) -wp-par $(WP_PAR)
+WP_SEL_b     = -wp-skip-fct $(WP_PART_A),bsched_run_cycle -wp-par $(WP_PAR)
 
-# Prover hints. WP races the provers on each goal, so a goal costs up to three times
-# the CPU of its fastest proof, and the full run keeps both cores busy throughout
-# (measured 2026-11-24: 891 s, the winners' prover time 513 s). The slowest goals
-# (winners' 5 to 45 s; 292 s together) therefore run apart, each with only the prover
-# that won the race: WP_HINTS_<part>_<prover> lists property names whose goals in
-# part a or b go to run <part>-<prover> and are left out of the part's own run
-# (-wp-prop -name), so every goal is still proven once. A hinted run that leaves a
-# goal unproven is run again with all of WP_PROVERS: a stale hint costs time, never
-# the verdict. WP_HINTS=0 races every goal. Scoped runs (WP_FCT) use no hints.
-# The lists are property names (an assert's or invariant's label, an ensures' name):
-# make prove WP_HINTS=0 and the log's slowest "Valid (...)" lines tell which to list.
-WP_HINTS    ?= 1
-# The provers a hint may name (the suffixes of the WP_HINTS_<part>_<prover> lists).
-WP_HINT_PROVERS := cvc4 cvc5
-WP_HINTS_a_cvc4 := table_first sorted_slots same_table table ran_listed ran_exact_kept table_kept sorted_same kept_order \
-                   ok_maxpv listed_due table_size wf_kept listed_next_int table_key due_listed same_count
-WP_HINTS_a_cvc5 := same_first all listed ok_closed_form j0_is
-WP_HINTS_b_cvc4 := ok_due_exact
-WP_HINTS_b_cvc5 := in_class_due by_member_due by_member_at
+# The proof session. WP races the provers on each goal, so a goal costs up to three
+# times the CPU of its fastest proof, and on 2 cores the race is what a full run
+# waits for (measured 2026-11-27: 1249 s of wall time for 879 s of the winners'
+# prover time; replaying the session, 719 s on the idle machine, about half the
+# CPU). session.tsv names the prover that proved each goal in a racing run;
+# make prove installs it as WP's proof scripts (wp_session.py) and replays them
+# (-wp-prover script,...): each goal runs its prover alone, with make prove's own
+# limits, and a goal whose prover fails, or that is not in the session, is raced as
+# before, so a stale session costs time, never the verdict. make wp-session races
+# every goal (WP_SESSION=0) and writes session.tsv anew: run it when the goals change.
+WP_SESSION      ?= 1
+WP_SESSION_TSV  := bsched/proofs/wp/session.tsv
+wp_session_on    = $(filter 1,$(WP_SESSION))
 wp_empty :=
 wp_space := $(wp_empty) $(wp_empty)
 wp_comma := ,
-wp_list   = $(subst $(wp_space),$(wp_comma),$(strip $(1)))
-WP_HINT_RUNS = $(if $(filter 1,$(WP_HINTS)),$(foreach p,a b,$(foreach v,$(WP_HINT_PROVERS),$(if $(WP_HINTS_$(p)_$(v)),$(p)-$(v)))))
-# $(call wp_hints_left_out,PART): -wp-prop=-name,... for the part's hinted properties
-wp_hints_left_out = $(if $(filter $(1)-%,$(WP_HINT_RUNS)),-wp-prop=$(call wp_list,$(addprefix -,$(foreach v,$(WP_HINT_PROVERS),$(WP_HINTS_$(1)_$(v))))))
-$(foreach p,a b,$(foreach v,$(WP_HINT_PROVERS),\
-    $(eval WP_SEL_$(p)-$(v) = $$(WP_SEL_$(p)_all) -wp-prop $$(call wp_list,$$(WP_HINTS_$(p)_$(v))))\
-    $(eval WP_PROVERS_$(p)-$(v) := $(v))\
-    $(eval WP_FILE_$(p)-$(v) := bsched/bsched.c)))
 # Run `ref`: Fig. 7's reference engine (bsched/ref/bsched_fig7.c, spec in
 # spec/bsched_fig7.h). Only its own functions: the shared lemma functions it
 # calls are the same text that runs a and b prove. WP_FILE: the file of a
@@ -107,10 +92,11 @@ WP_SPEC     += bsched/spec/bsched_fig7.h
 WP_SOURCES  += bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
 
 CHECKS += wp wp-negative
-.PHONY: prove check-wp check-wp-negative wp-calibrate
+.PHONY: prove check-wp check-wp-negative wp-calibrate wp-session
 
 # $(call wp_run,RUN,PROVERS): one Frama-C process, its log and JSON report in WP_OUT.
-wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(2) $(WP_SEL_$(1)) -wp-report-json $(WP_OUT)/wp-$(1).json \
+wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(if $(wp_session_on),script$(wp_comma))$(2) \
+	$(if $(wp_session_on),-wp-session $(WP_OUT)/session) $(WP_SEL_$(1)) -wp-report-json $(WP_OUT)/wp-$(1).json \
 	$(WP_FILE_$(1)) > $(WP_OUT)/wp-$(1).log 2>&1
 
 # Runs WP, then gates on the report: any goal not proven, fewer than
@@ -118,14 +104,11 @@ wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(2) $(WP_SEL_$(1)) -wp-report-json
 prove:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_OUT)
+	@$(if $(wp_session_on),python3 bsched/proofs/wp/wp_session.py install $(WP_SESSION_TSV) $(WP_OUT)/session \
+	    --steps $(WP_STEPS) --steps-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT),rm -rf $(WP_OUT)/session)
 	@start=$$(date +%s); rc=0; pids=; \
-	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(or $(WP_PROVERS_$(r)),$(WP_PROVERS))) & pids="$$pids $$!";) \
+	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(WP_PROVERS)) & pids="$$pids $$!";) \
 	for pid in $$pids; do wait $$pid || rc=$$?; done; \
-	$(foreach r,$(filter $(WP_HINT_RUNS),$(WP_RUNS)),if [ $$rc -eq 0 ] && \
-	    ! grep -Eq '^\[wp\] Proved goals: +([0-9]+) / \1$$' $(WP_OUT)/wp-$(r).log; then \
-	    echo "prove: $(WP_PROVERS_$(r)) alone left goals of run $(r) unproven (a stale hint in WP_HINTS_*); racing $(WP_PROVERS) on them"; \
-	    mv $(WP_OUT)/wp-$(r).log $(WP_OUT)/wp-$(r)-hinted.log; \
-	    $(call wp_run,$(r),$(WP_PROVERS)) || rc=$$?; fi;) \
 	cat $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).log) > $(WP_OUT)/wp.log; \
 	python3 bsched/proofs/wp/wp_report.py --merge $(WP_OUT)/wp.json \
 	    $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).json) || rc=1; \
@@ -137,13 +120,29 @@ prove:
 	    $(if $(WP_EXPECT_FAIL),--expect-fail $(WP_EXPECT_FAIL)) \
 	    $(if $(WP_KNOWN_GAPS),--known-gap $(WP_KNOWN_GAPS))
 
+# Suite wp-session: replaying the session proves a goal with its recorded prover alone
+# (session_check.sh, ~15 s).
+CHECKS += wp-session
+.PHONY: check-wp-session
+check-wp-session:
+	@$(SETUP) frama-c
+	@WP_PROVERS=$(WP_PROVERS) WP_STEPS=$(WP_STEPS) WP_TIMEOUT=$(WP_TIMEOUT) \
+	    bsched/proofs/wp/session_check.sh $(WP_SESSION_TSV) $(WP_DIR)/session-check $(RESULTS)/wp-session.txt
+
+# make wp-session: the full run racing every goal (its log and report in
+# build/wp-race/), then session.tsv from its report. Fails, writing nothing, unless
+# every goal is proven.
+wp-session:
+	@$(MAKE) --no-print-directory prove WP_SESSION=0 WP_OUT=$(BUILD)/wp-race && \
+	python3 bsched/proofs/wp/wp_session.py write $(BUILD)/wp-race/report.json $(WP_SESSION_TSV)
+
 # The full run with step limits far above any proof's (z3's rlimit is 32-bit), then
 # the steps each prover used and the limits they call for (wp_steps.py); fails when
 # WP_STEPS or WP_STEPS_Z3 no longer keeps its 2x margin. One run of make prove's length.
 WP_CALIBRATE_STEPS ?= 2000000000
 wp-calibrate:
 	@$(MAKE) --no-print-directory prove WP_STEPS=$(WP_CALIBRATE_STEPS) WP_STEPS_Z3=$(WP_CALIBRATE_STEPS) \
-	    WP_OUT=$(BUILD)/wp-calibrate; rc=$$?; \
+	    WP_SESSION=0 WP_OUT=$(BUILD)/wp-calibrate; rc=$$?; \
 	python3 bsched/proofs/wp/wp_steps.py $(BUILD)/wp-calibrate/wp.log --margin 2 \
 	    --limit $(WP_STEPS) --limit-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT) || rc=1; exit $$rc
 
@@ -171,7 +170,7 @@ WP_NEGATIVE_TIMEOUT ?= 60
 check-wp-negative:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_DIR)
-	@$(MAKE) --no-print-directory prove WP_DEFINES=-DBSCHED_MUTANT_NO_REVERSE \
+	@$(MAKE) --no-print-directory prove WP_DEFINES=-DBSCHED_MUTANT_NO_REVERSE WP_SESSION=0 \
 	    WP_FCT=$(WP_MUTANT_FCT) WP_MIN_GOALS=150 WP_OUT=$(WP_DIR)/mutant WP_TIMEOUT=$(WP_NEGATIVE_TIMEOUT) \
 	    > $(WP_DIR)/mutant.log 2>&1; rc=$$?; \
 	cat $(WP_DIR)/mutant.log; \

@@ -50,6 +50,20 @@ def seconds(rest):
     return total
 
 
+def script_prover(wp, goal):
+    """The prover that proved a goal replayed from the session: the log says only
+    '[Script]'; the JSON report lists it under the goal (its Why3 id, e.g.
+    Z3:4.8.12:qi), returned as the log names it (Z3 4.8.12 (qi)). None when the
+    JSON files the goal under another name (call preconditions, assigns parts)."""
+    name = goal[len("typed_"):] if goal.startswith("typed_") else goal
+    for props in wp.get("wp:functions", {}).values():
+        for prover, counts in props.get(name, {}).items():
+            if prover != "wp:main" and counts.get("valid"):
+                parts = prover.split(":")
+                return " ".join(parts[:2]) + ("".join(" (%s)" % a for a in parts[2:]))
+    return None
+
+
 def classify(goal, functions):
     name = goal[len("typed_"):] if goal.startswith("typed_") else goal
     func = None
@@ -97,8 +111,8 @@ def merge(out, inputs):
         with open(path, encoding="utf-8") as f:
             part = json.load(f)
         add_counts(merged["wp:global"], part.get("wp:global", {}))
-        # A function's properties may be split over runs (the prover hints of wp.mk),
-        # but no property may be analysed twice; its totals (wp:section) add up.
+        # A function's properties may be split over runs, but no property may be
+        # analysed twice; its totals (wp:section) add up.
         for func, goals in part.get("wp:functions", {}).items():
             acc = merged["wp:functions"].setdefault(func, {})
             for prop, counts in goals.items():
@@ -149,6 +163,8 @@ def main():
                            "seconds": 0.0, "attempts": []}
             failed_goal = goal
             continue
+        if prover == "Script":  # replayed from the session (wp_session.py): the JSON names the prover
+            prover = script_prover(wp, goal) or prover
         g = goals.setdefault(goal, {"goal": goal, "status": status, "prover": prover,
                                     "seconds": 0.0, "attempts": []})
         t = seconds(m["rest"] or "")
@@ -185,6 +201,10 @@ def main():
             totals[c] += row.get(c, 0)
     print("-" * len(header))
     print("%-41s" % "all" + "".join("%11d" % totals[c] for c in cols) + "%8d" % sum(totals.values()))
+    if "script" in cols:
+        print("script: proven by replaying the proof session (wp_session.py); WP's JSON report files "
+              "these goals (call preconditions, parts of assigns) under other names, so their prover "
+              "is not shown")
 
     unproven = sorted(g["goal"] for g in goals.values() if g["status"] != "Valid")
     expected = set(args.expect_fail)
