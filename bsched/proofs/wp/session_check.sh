@@ -17,15 +17,15 @@ goal=typed_period_of_ensures_is_pow2
 pass=0; fail=0
 ok() { pass=$((pass + 1)); echo "ok: $*"; }
 bad() { fail=$((fail + 1)); echo "FAILED: $*"; }
-# run NAME STEPS: installs the session (its scripts carry STEPS), replays it on period_of;
+# replay: installs the session as make prove does and replays it on period_of;
 # prints the goal's provers from the JSON report as 'prover=verdict ...'
-run() {
-    python3 "$root/bsched/proofs/wp/wp_session.py" install "$session" "$out/$1" \
-        --steps "$2" --steps-z3 "$2" --timeout "$WP_TIMEOUT" || return 1
+replay() {
+    python3 "$root/bsched/proofs/wp/wp_session.py" install "$session" "$out/replay" \
+        --steps "$WP_STEPS" --steps-z3 "$WP_STEPS_Z3" --timeout "$WP_TIMEOUT" || return 1
     nice frama-c -cpp-extra-args="-I$root/bsched" -wp -wp-rte -wp-prover "script,$WP_PROVERS" \
-        -wp-timeout "$WP_TIMEOUT" -wp-steps "$WP_STEPS" -wp-cache none -wp-session "$out/$1" \
-        -wp-report-json "$out/$1.json" -wp-fct period_of "$root/bsched/bsched.c" > "$out/$1.log" 2>&1
-    python3 - "$out/$1.json" "${goal#typed_}" <<'PY'
+        -wp-timeout "$WP_TIMEOUT" -wp-steps "$WP_STEPS" -wp-cache none -wp-session "$out/replay" \
+        -wp-report-json "$out/replay.json" -wp-fct period_of "$root/bsched/bsched.c" > "$out/replay.log" 2>&1
+    python3 - "$out/replay.json" "${goal#typed_}" <<'PY'
 import json, sys
 props = json.load(open(sys.argv[1]))["wp:functions"]["period_of"][sys.argv[2]]
 print(" ".join("%s=%s" % (p, "valid" if c.get("valid") else "not-valid")
@@ -37,7 +37,7 @@ recorded=$(awk -F'\t' -v g="$goal" '$1 == g { print $2 }' "$session")
 if [ -n "$recorded" ]; then ok "the session names $recorded for $goal"
 else bad "the session names no prover for $goal"; fi
 
-provers=$(run replay "$WP_STEPS")
+provers=$(replay)
 if [ -n "$recorded" ] && [ "$provers" = "$recorded=valid" ]; then
     ok "replayed: proven by $recorded alone ($provers)"
 else
