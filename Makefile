@@ -3,7 +3,9 @@
 #   make check   every test and proof; ends with 'N passed, N failed'
 #   make run     the reference firmware on the emulated RoboCube
 # Each part of the tree adds its rules in its own fragment (*.mk) and its
-# suites to CHECKS; ci/run-checks runs them as 'make check-SUITE'.
+# suites to CHECKS; ci/run-checks runs them as 'make check-SUITE'. The proof
+# suites (WP, CBMC) are also named in PROOF_CHECKS: they run in a lane of their
+# own, at low priority, beside the other suites (ci/run-checks).
 
 .DEFAULT_GOAL := all
 SHELL := /bin/bash
@@ -22,6 +24,7 @@ HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -W
 
 ALL     :=
 CHECKS  :=
+PROOF_CHECKS :=
 
 include bsched/bsched.mk
 -include $(sort $(wildcard bsched/proofs/*/*.mk))
@@ -39,7 +42,7 @@ setup:
 
 check:
 	@$(SETUP)
-	@ci/run-checks $(CHECKS)
+	@ci/run-checks --proof-lane "$(PROOF_CHECKS)" $(CHECKS)
 
 clean:
 	rm -rf $(BUILD)

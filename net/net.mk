@@ -121,6 +121,7 @@ NET_FUZZ_CHECK_RUNS ?= 200000
 # A FEC input costs a Reed-Solomon decode (~0.5 ms under ASan): fewer runs.
 NET_FUZZ_FEC_DIV ?= 8
 CHECKS += net-fuzz net-cbmc
+PROOF_CHECKS += net-cbmc
 
 .PHONY: fuzz check-net-fuzz check-net-cbmc
 $(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*.c) \

@@ -92,6 +92,7 @@ WP_SPEC     += bsched/spec/bsched_fig7.h
 WP_SOURCES  += bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
 
 CHECKS += wp wp-negative
+PROOF_CHECKS += wp wp-negative
 .PHONY: prove check-wp check-wp-negative wp-calibrate wp-session
 
 # $(call wp_run,RUN,PROVERS): one Frama-C process, its log and JSON report in WP_OUT.
@@ -123,6 +124,7 @@ prove:
 # Suite wp-session: replaying the session proves a goal with its recorded prover alone
 # (session_check.sh, ~15 s).
 CHECKS += wp-session
+PROOF_CHECKS += wp-session
 .PHONY: check-wp-session
 check-wp-session:
 	@$(SETUP) frama-c
