@@ -10,8 +10,8 @@
  * binary inputs; IPCR change detection with the ACR enables), OPCR/OPR
  * set/reset, and the counter/timer (counter and timer modes from the X1
  * crystal or X1/16, ISR counter-ready, start/stop commands) in virtual time.
- * Host interface (QOM): "input-port" (read/write), "opr" and "output-pins"
- * (read-only).
+ * Host interface (QOM): "input-port" (read/write), "opr", "output-pins" and
+ * "received-a"/"received-b" (characters taken from each chardev; read-only).
  *
  * Radio mode (property "radio-medium", off by default): channel A is the
  * BiM-433 module on a shared medium (emu/radio_medium.py).  Its chardev then
@@ -64,6 +64,7 @@ OBJECT_DECLARE_SIMPLE_TYPE(MC68681DuartState, MC68681_DUART)
 #define RADIO_OP_RX 0x01        /* OP0: receive select */
 #define RADIO_OP_TX 0x02        /* OP1: transmit select */
 #define RADIO_RXQ 1024          /* characters in flight towards the FIFO */
+#define HOST_RXQ 1024           /* characters from the host waiting for the FIFO */
 
 typedef struct RadioState {
     bool enabled;               /* property radio-medium */
@@ -96,6 +97,14 @@ typedef struct DuartChannel {
     bool overrun;
     uint8_t rx_fifo[RX_FIFO_DEPTH];
     unsigned rx_count;
+    /* Characters taken from the chardev that wait for room in the FIFO. Taking
+     * a whole burst at once makes the guest see it at the same virtual times
+     * however busy the host is (tests stop the VM, write, wait for
+     * host_rx_taken, go on); from the chardev it comes in whenever the I/O
+     * thread gets to it. */
+    uint8_t hostq[HOST_RXQ];
+    unsigned hostq_head, hostq_count;
+    uint32_t host_rx_taken;     /* properties received-a, received-b */
 } DuartChannel;
 
 struct MC68681DuartState {
@@ -306,8 +315,6 @@ static void radio_rx_enqueue(MC68681DuartState *s, uint8_t byte)
     radio_update_carrier(s);
 }
 
-static void channel_push_rx(MC68681DuartState *s, DuartChannel *c, uint8_t byte);
-
 static void radio_rx_tick(void *opaque)
 {
     MC68681DuartState *s = opaque;
@@ -502,12 +509,28 @@ static void channel_transmit(MC68681DuartState *s, DuartChannel *c, uint8_t byte
 
 static int duart_can_receive(DuartChannel *c)
 {
-    /* Characters wait in the host-side chardev while the receiver is off or
-     * the FIFO is full (no loss from the host's point of view). */
+    /* Characters wait on the host side while the receiver is off, and in the
+     * host queue while the FIFO is full (no loss from the host's point of view). */
     if (!c->rx_enabled || (c->mr2 >> 6) == 2) {
         return 0;
     }
-    return RX_FIFO_DEPTH - c->rx_count;
+    return HOST_RXQ - c->hostq_count;
+}
+
+/* Moves host characters into the FIFO while it has room (auto-echo mode
+ * echoes each as it arrives). */
+static void channel_fill_fifo(MC68681DuartState *s, DuartChannel *c)
+{
+    while (c->rx_enabled && c->hostq_count && c->rx_count < RX_FIFO_DEPTH) {
+        uint8_t byte = c->hostq[c->hostq_head];
+
+        c->hostq_head = (c->hostq_head + 1) % HOST_RXQ;
+        c->hostq_count--;
+        channel_push_rx(s, c, byte);
+        if ((c->mr2 >> 6) == 1) {
+            qemu_chr_fe_write_all(&c->chr, &byte, 1);
+        }
+    }
 }
 
 static void duart_receive(MC68681DuartState *s, DuartChannel *c,
@@ -515,12 +538,11 @@ static void duart_receive(MC68681DuartState *s, DuartChannel *c,
 {
     int i;
 
-    for (i = 0; i < size; i++) {
-        channel_push_rx(s, c, buf[i]);
-        if ((c->mr2 >> 6) == 1) {
-            qemu_chr_fe_write_all(&c->chr, &buf[i], 1);
-        }
+    for (i = 0; i < size && c->hostq_count < HOST_RXQ; i++) {
+        c->hostq[(c->hostq_head + c->hostq_count++) % HOST_RXQ] = buf[i];
+        c->host_rx_taken++;
     }
+    channel_fill_fifo(s, c);
     duart_update_irq(s);
 }
 
@@ -563,6 +585,7 @@ static uint8_t channel_read_rb(MC68681DuartState *s, DuartChannel *c)
     if (c->rx_count) {
         memmove(c->rx_fifo, c->rx_fifo + 1, RX_FIFO_DEPTH - 1);
         c->rx_count--;
+        channel_fill_fifo(s, c);
         qemu_chr_fe_accept_input(&c->chr);
     }
     return byte;
@@ -600,6 +623,7 @@ static void channel_command(MC68681DuartState *s, DuartChannel *c, uint8_t cr)
         c->tx_enabled = false;
     }
     if (c->rx_enabled) {
+        channel_fill_fifo(s, c);
         qemu_chr_fe_accept_input(&c->chr);
     }
 }
@@ -1009,6 +1033,10 @@ static void duart_init(Object *obj)
                         duart_set_input_port, NULL, NULL);
     object_property_add(obj, "opr", "uint8", duart_get_u8, NULL, NULL, NULL);
     object_property_add(obj, "output-pins", "uint8", duart_get_u8, NULL, NULL, NULL);
+    object_property_add_uint32_ptr(obj, "received-a", &s->ch[0].host_rx_taken,
+                                   OBJ_PROP_FLAG_READ);
+    object_property_add_uint32_ptr(obj, "received-b", &s->ch[1].host_rx_taken,
+                                   OBJ_PROP_FLAG_READ);
 }
 
 static Property duart_properties[] = {

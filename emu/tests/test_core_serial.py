@@ -171,6 +171,28 @@ def test_duart_transmit_and_receive(machine, channel):
     assert other.received == b""
 
 
+def test_duart_takes_a_host_burst_whole_and_loses_nothing(machine):
+    """The host's characters wait in the model's queue, not in the chardev:
+    received-b counts all of them at once, the FIFO holds 3 with FFULL and no
+    overrun, and each read of RBB brings the next in order."""
+    m = machine
+    m.writeb(CRB, 0x2A)
+    m.writeb(CRB, 0x05)
+    before = m.qom_get(DUART_QOM, "received-b")
+    burst = bytes(range(32, 127)) * 4                  # 380 characters, FIFO is 3
+    m.console.write(burst)
+    deadline = time.monotonic() + 10
+    while m.qom_get(DUART_QOM, "received-b") - before < len(burst):
+        assert time.monotonic() < deadline, "the DUART did not take the burst"
+        time.sleep(0.005)
+    assert m.qom_get(DUART_QOM, "received-b") - before == len(burst)
+    assert m.readb(SRB) & (RXRDY | FFULL | OE) == RXRDY | FFULL
+    got = bytes(m.readb(RBB) for _ in range(len(burst)))
+    assert got == burst
+    assert m.readb(SRB) & (RXRDY | OE) == 0
+    assert m.qom_get(DUART_QOM, "received-a") == 0
+
+
 def test_duart_fifo_overrun_in_local_loopback(machine):
     m = machine
     m.writeb(CRB, 0x10)
