@@ -331,6 +331,19 @@ class Machine:
     def qom_set(self, path, prop, value):
         self.qmp.command("qom-set", path=path, property=prop, value=value)
 
+    def console_write_taken(self, data, timeout=10.0):
+        """Writes data to the console and returns once the DUART has taken all
+        of it into its host queue (its received-b count), not just the chardev.
+        With the VM stopped meanwhile, the guest meets the whole of data at the
+        same virtual times however slowly the I/O thread hands it over."""
+        before = self.qom_get("/machine/duart", "received-b")
+        self.console.write(data)
+        deadline = time.monotonic() + timeout
+        while self.qom_get("/machine/duart", "received-b") - before < len(data):
+            assert time.monotonic() < deadline, "the DUART did not take all the data"
+            time.sleep(0.005)
+        return before
+
 
 @contextlib.contextmanager
 def start(**kwargs):
