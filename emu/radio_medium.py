@@ -17,6 +17,9 @@ bytes, both ways (emu/README.md, "Radio medium"):
                         03 0  go on: every synchronised station finished the quantum
                         04 p  (to paced stations) your transmission is over:
                               p = 1 paced in the boards' virtual time, 0 not paced
+                        05 k  (to paced stations) the boards' clock: k > 0, k x 10 us
+                              of virtual time have passed; k = 0, nobody keeps
+                              virtual time now (see "Clock")
 
 Lock step: a board started with radio-sync-ns > 0 sends sync at the end of
 each quantum of its virtual time and waits for go on; the medium answers once
@@ -35,6 +38,15 @@ the frame's length after they had received it, and their ACK lost the
 arbitration 12 times and was dropped (net/README.md, "Fixed bugs"). When no
 board is in lock step, a paced station's messages apply at once (it then
 paces itself in wall time).
+
+Clock: a host peer's timers (retransmission, listen-before-talk) must run
+in the boards' time too. In wall time they expire early whenever the boards
+run slower than the wall clock (on a loaded host, boards niced beside proofs
+made 50 rounds, 25 ms of virtual time, per second), so the peer gave up on
+boards that were answering promptly in their own time (net/README.md, "Fixed
+bugs"). So every round, the medium tells each paced station how much virtual
+time passed (05 k, in 10 us units, the remainder carried to the next round),
+and 05 0 when the last board leaves the lock step.
 
 A station is *on air* while only TX select is on (both = the module's
 loop-back test mode, which the board model keeps to itself), and *hears*
@@ -72,7 +84,8 @@ import signal
 import sys
 from collections import deque
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC, MSG_PACE = 0, 1, 2, 3, 4
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC, MSG_PACE, MSG_CLOCK = 0, 1, 2, 3, 4, 5
+CLOCK_UNIT_NS = 10_000          # the unit of 05 k
 SEL_RX, SEL_TX = 1, 2
 MAX_BACKLOG = 1 << 20
 
@@ -95,6 +108,7 @@ class Station:
         self.char_ns = 0              # paced station: duration of one character
         self.backlog = deque()        # paced station: (kind, value) not yet played
         self.credit_ns = 0            # paced station: virtual time owed to its backlog
+        self.clock_ns = 0             # paced station: virtual time not yet told (05 k)
 
     @property
     def name(self):
@@ -131,6 +145,7 @@ class Medium:
             self.out_of_range.add(frozenset((a, b)))
         self.sync_members = set()       # stations that take part in the lock step
         self.sync_done = set()          # ... that finished the current round
+        self.clock_running = False      # rounds are counted (paced stations told 05 k)
         self.stats = dict(sync_rounds=0, transmissions=0, characters=0, delivered=0, collisions=0,
                           collided_chars=0, lost=0, corrupted=0, noise_bursts=0,
                           stations=0)
@@ -274,18 +289,31 @@ class Medium:
             for p in self.stations:              # nobody keeps virtual time now
                 if p.backlog:
                     self.play(p, unpaced=True)
+                if p.char_ns and self.clock_running:
+                    p.send(bytes((MSG_CLOCK, 0)))
+            self.clock_running = False
             return
         if self.sync_done >= self.sync_members:
             self.stats["sync_rounds"] += 1
+            self.clock_running = True
             # The paced stations' share of the round, before the boards go on,
             # so what they send in this round reaches the boards in their next.
             for p in self.stations:
                 if p.backlog:
                     p.credit_ns += self.args.sync_ns
                     self.play(p)
+                if p.char_ns:
+                    self.tell_clock(p, self.args.sync_ns)
             for m in self.sync_done:
                 m.send(bytes((MSG_SYNC, 0)))
             self.sync_done = set()
+
+    def tell_clock(self, st, ns):
+        st.clock_ns += ns
+        while st.clock_ns >= CLOCK_UNIT_NS:
+            k = min(255, st.clock_ns // CLOCK_UNIT_NS)
+            st.clock_ns -= k * CLOCK_UNIT_NS
+            st.send(bytes((MSG_CLOCK, k)))
 
     def set_selects(self, st, selects):
         if self.args.trace:

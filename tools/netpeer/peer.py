@@ -2,7 +2,6 @@
 import queue
 import random
 import threading
-import time
 
 from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, FecDecoder, Frame,
                        FrameDecoder, Reassembly, encode_frame, encode_frame_fec, fragments)
@@ -47,8 +46,8 @@ class Peer:
 
     def close(self):
         self.running = False
+        self.reader.join(timeout=2)   # its reads time out in 0.2 s; a closed port raises
         self.t.close()
-        self.reader.join(timeout=2)
 
     # -- air ------------------------------------------------------------------
     def _transmit(self, frame, is_ack=False, burst=False):
@@ -57,11 +56,11 @@ class Peer:
             # Listen before talk, as net/mac.c (initial wait for data frames,
             # except a fragment right after its predecessor's ACK: link_is_burst).
             if not is_ack and not burst:
-                time.sleep(self.rng.randrange(0, 5) * 0.003)
+                self.t.clock.sleep(self.rng.randrange(0, 5) * 0.003)
             for attempt in range(12):
                 if not self.t.carrier:
                     break
-                time.sleep((1 + self.rng.randrange(4 << min(attempt, 4))) * 0.003)
+                self.t.clock.sleep((1 + self.rng.randrange(4 << min(attempt, 4))) * 0.003)
             self.t.transmit(data)
             self.stats["frames_sent"] += 1
 
@@ -79,6 +78,7 @@ class Peer:
         self.stats["frames_received"] += 1
         if f.type == ACK and f.dst == self.station:
             self.acks.put((f.src, f.seq))
+            self.t.clock.notify()
         elif f.type == DATA and f.dst == self.station:
             threading.Thread(target=self._transmit,
                              args=(Frame(self.station, f.src, ACK, f.seq), True),
@@ -125,15 +125,11 @@ class Peer:
                 self.stats["retransmissions"] += 1
             self._transmit(Frame(self.station, dst, DATA, seq, payload),
                            burst=burst and attempt == 0)
-            deadline = time.monotonic() + rto * (1 + self.rng.random() / 4)
-            while True:
-                left = deadline - time.monotonic()
-                if left <= 0:
-                    break
-                try:
-                    src, aseq = self.acks.get(timeout=left)
-                except queue.Empty:
-                    break
+            # The timeout counts in the boards' time when they keep one
+            # (transport.PeerClock): a slow host must not make us give up.
+            deadline = self.t.clock.now() + rto * (1 + self.rng.random() / 4)
+            while self.t.clock.wait_until(deadline, lambda: not self.acks.empty()):
+                src, aseq = self.acks.get_nowait()
                 if src == dst and aseq == seq:
                     self.tx_seq[dst] = (seq + 1) & 0xFF
                     return

@@ -93,11 +93,9 @@ def run(args):
         for b in boards:
             if not b.wait_for("netnode: done", max(1.0, deadline - time.monotonic())):
                 print(f"net-soak: station {b.station} did not finish; console:\n{b.text()}")
-        if peer is not None:
-            end = time.monotonic() + 10
-            while time.monotonic() < end and any(
-                    host["next"][s] < args.messages for s in host["next"]):
-                time.sleep(0.1)
+        if peer is not None:           # 10 s of the boards' time for the last ACKs
+            peer.t.clock.wait_until(peer.t.clock.now() + 10, lambda: all(
+                host["next"][s] >= args.messages for s in host["next"]), poll=0.1)
     finally:
         for b in boards:
             b.stop()

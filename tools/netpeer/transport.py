@@ -3,8 +3,78 @@ import socket
 import threading
 import time
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE = 0, 1, 2, 4
+MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE, MSG_CLOCK = 0, 1, 2, 4, 5
 SEL_RX, SEL_TX = 1, 2
+CLOCK_UNIT = 10e-6            # seconds per unit of the medium's 05 k
+
+
+class PeerClock:
+    """The time a host peer's timers run on: the boards' virtual time while
+    the medium reports it (emu/radio_medium.py, "Clock"), wall time
+    otherwise. In wall time the peer's retransmission timer expired while
+    boards slowed by a loaded host were still answering in their own time.
+
+    The reading is monotonic and continuous when the source changes. If the
+    virtual clock stops for longer than STALL seconds of wall time (boards
+    stopped, the medium hung), wall time counts from then on, so no wait on
+    this clock lasts for ever."""
+
+    STALL = 10.0
+
+    def __init__(self):
+        self._cond = threading.Condition()
+        self._base = 0.0              # the reading when the current source took over
+        self._virtual = None          # virtual seconds since then; None: wall time
+        self._since = time.monotonic()    # wall: when it took over / the last tick
+
+    def _now(self):
+        idle = time.monotonic() - self._since
+        if self._virtual is None:
+            return self._base + idle
+        return self._base + self._virtual + max(0.0, idle - self.STALL)
+
+    def now(self):
+        with self._cond:
+            return self._now()
+
+    def advance(self, seconds):
+        """The boards' clock moved on by seconds (05 k)."""
+        with self._cond:
+            if self._virtual is None:
+                self._base, self._virtual = self._now(), 0.0
+            else:                     # a stall counted in wall time stays counted
+                self._base += max(0.0, time.monotonic() - self._since - self.STALL)
+            self._virtual += seconds
+            self._since = time.monotonic()
+            self._cond.notify_all()
+
+    def to_wall(self):
+        """Nobody keeps virtual time now (05 0, or the medium is gone)."""
+        with self._cond:
+            if self._virtual is not None:
+                self._base, self._virtual = self._now(), None
+                self._since = time.monotonic()
+            self._cond.notify_all()
+
+    def notify(self):
+        """Something a waiter's predicate looks at has changed."""
+        with self._cond:
+            self._cond.notify_all()
+
+    def wait_until(self, deadline, predicate=None, poll=0.05):
+        """True as soon as predicate() holds, False when the clock reaches
+        deadline first. Whoever changes what predicate reads calls notify()."""
+        with self._cond:
+            while True:
+                if predicate is not None and predicate():
+                    return True
+                left = deadline - self._now()
+                if left <= 0:
+                    return False
+                self._cond.wait(min(left, poll))
+
+    def sleep(self, seconds):
+        self.wait_until(self.now() + seconds)
 
 
 class MediumTransport:
@@ -31,11 +101,11 @@ class MediumTransport:
                 time.sleep(0.05)
         self.baud = baud
         self.carrier = False
+        self.clock = PeerClock()
         self.lock = threading.Lock()
         self.closed = False
         self._pending = b""
-        self._tx_over = threading.Condition()
-        self._tx_over_count = 0
+        self._tx_over_count = 0       # the medium's "your transmission is over" (04 p)
         self._tx_paced = False
 
     def hello(self, station):
@@ -57,17 +127,15 @@ class MediumTransport:
         for b in data:
             msgs += bytes((MSG_DATA, b))
         msgs += bytes((MSG_CONTROL, SEL_RX))
-        start = time.monotonic()
-        with self._tx_over:
-            seen = self._tx_over_count
-            self._send(bytes(msgs))
-            # The medium's word that it is over; bounded, in case it is gone
-            # or the boards stall (then the air is silent anyway).
-            self._tx_over.wait_for(lambda: self._tx_over_count != seen or self.closed,
-                                   timeout=max(10.0, 50 * air_time))
-            paced = self._tx_paced and self._tx_over_count != seen
-        if not paced:
-            time.sleep(max(0.0, start + air_time - time.monotonic()))
+        start = self.clock.now()
+        seen = self._tx_over_count
+        self._send(bytes(msgs))
+        # The medium's word that it is over; bounded, in case it is gone
+        # or the boards stall (then the air is silent anyway).
+        over = self.clock.wait_until(start + max(10.0, 50 * air_time),
+                                     lambda: self._tx_over_count != seen or self.closed)
+        if not (over and self._tx_paced and not self.closed):
+            self.clock.wait_until(start + air_time)
 
     def read(self, timeout):
         """Bytes heard within timeout (b'' when none); None when the medium is gone."""
@@ -77,8 +145,10 @@ class MediumTransport:
         except socket.timeout:
             return b""
         except OSError:
+            self.clock.to_wall()
             return None
         if not chunk:
+            self.clock.to_wall()
             return None
         data = self._pending + chunk
         usable = len(data) & ~1
@@ -90,16 +160,19 @@ class MediumTransport:
             elif data[i] == MSG_CONTROL:
                 self.carrier = bool(data[i + 1])
             elif data[i] == MSG_PACE:
-                with self._tx_over:
-                    self._tx_paced = bool(data[i + 1])
-                    self._tx_over_count += 1
-                    self._tx_over.notify_all()
+                self._tx_paced = bool(data[i + 1])
+                self._tx_over_count += 1
+                self.clock.notify()
+            elif data[i] == MSG_CLOCK:
+                if data[i + 1]:
+                    self.clock.advance(data[i + 1] * CLOCK_UNIT)
+                else:
+                    self.clock.to_wall()
         return bytes(out)
 
     def close(self):
-        with self._tx_over:
-            self.closed = True
-            self._tx_over.notify_all()
+        self.closed = True
+        self.clock.to_wall()          # no 05 k will come: waits end in wall time
         self.sock.close()
 
 
@@ -114,6 +187,7 @@ class SerialTransport:
         import serial                 # pyserial: only needed for real hardware
         self.port = serial.Serial(device, baud, timeout=0.1)
         self.baud = baud
+        self.clock = PeerClock()      # real radios: always wall time
         self.modem_lines = True
 
     @property
