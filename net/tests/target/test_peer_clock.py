@@ -35,8 +35,9 @@ def connect(path, number):
     return s
 
 
-def messages(sock, wait):
-    """The 2-byte messages that arrive within wait seconds."""
+def messages(sock, wait, until=None):
+    """The 2-byte messages that arrive within wait seconds (or up to the
+    message until, if it comes first)."""
     sock.settimeout(0.05)
     buf, end = b"", time.monotonic() + wait
     while time.monotonic() < end:
@@ -47,6 +48,9 @@ def messages(sock, wait):
         if not chunk:
             break
         buf += chunk
+        got = [(buf[i], buf[i + 1]) for i in range(0, len(buf) & ~1, 2)]
+        if until in got:
+            return got
     return [(buf[i], buf[i + 1]) for i in range(0, len(buf) & ~1, 2)]
 
 
@@ -69,7 +73,7 @@ def test_medium_tells_paced_stations_the_boards_time(medium):
     told = [v for k, v in messages(peer, 0.3) if k == MSG_CLOCK]
     assert told == [50] * 7
     board.close()                                    # the last board leaves the lock step
-    assert (MSG_CLOCK, 0) in messages(peer, 0.3)
+    assert (MSG_CLOCK, 0) in messages(peer, 5.0, until=(MSG_CLOCK, 0))
     # a station that did not ask to be paced keeps no clock
     assert all(k != MSG_CLOCK for k, _ in messages(plain, 0.1))
 
@@ -98,7 +102,7 @@ def test_clock_falls_back_to_wall_time_when_the_boards_stall():
     c.advance(0.001)
     start = time.monotonic()
     assert not c.wait_until(c.now() + 0.2)           # returns although no tick comes
-    assert 0.25 <= time.monotonic() - start < 2.0
+    assert 0.25 <= time.monotonic() - start < 10.0
     stalled = c.now()
     c.advance(0.001)                                 # a late tick does not go back
     assert c.now() >= stalled
