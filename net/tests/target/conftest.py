@@ -53,3 +53,17 @@ def air():
     yield a
     a.close()
 
+
+
+@pytest.fixture
+def medium_factory():
+    """make(**faults): a medium of its own (no boards), stopped at the end."""
+    made = []
+
+    def make(**faults):
+        m = MediumProcess(os.path.join(tempfile.mkdtemp(), "air.sock"), **faults)
+        made.append(m)
+        return m
+    yield make
+    for m in made:
+        m.stop()

@@ -1,67 +1,8 @@
 """emu/radio_medium.py alone, with raw stations: carrier, hearing rules,
 collisions, deterministic faults, stations that leave."""
-import os
-import socket
-import sys
-import tempfile
 import time
 
-import pytest
-
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from netpeer.netnode import MediumProcess   # noqa: E402
-
-
-class Station:
-    def __init__(self, sock, number):
-        self.s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-        self.s.connect(sock)
-        self.s.sendall(bytes((2, number)))
-        self.buf = b""
-
-    def selects(self, v):
-        self.s.sendall(bytes((1, v)))
-
-    def send(self, data):
-        self.s.sendall(b"".join(bytes((0, b)) for b in data))
-
-    def drain(self, wait=0.3):
-        """(characters heard, last carrier) after wait seconds."""
-        time.sleep(wait)
-        self.s.setblocking(False)
-        try:
-            while True:
-                chunk = self.s.recv(65536)
-                if not chunk:
-                    break
-                self.buf += chunk
-        except BlockingIOError:
-            pass
-        self.s.setblocking(True)
-        heard, carrier = bytearray(), None
-        usable = len(self.buf) & ~1
-        for i in range(0, usable, 2):
-            if self.buf[i] == 0:
-                heard.append(self.buf[i + 1])
-            else:
-                carrier = self.buf[i + 1]
-        self.buf = self.buf[usable:]
-        return bytes(heard), carrier
-
-
-@pytest.fixture
-def medium_factory():
-    made = []
-
-    def make(**faults):
-        d = tempfile.mkdtemp()
-        m = MediumProcess(os.path.join(d, "air.sock"), **faults)
-        made.append(m)
-        return m
-    yield make
-    for m in made:
-        m.stop()
+from medium_station import MSG_PACE, Station
 
 
 def test_hearing_carrier_and_loopback(medium_factory):
@@ -141,30 +82,14 @@ def test_out_of_range_and_leaving_station(medium_factory):
     assert m.control("bogus") .startswith("error")
 
 
-def read_msgs(sock, until_kind, timeout=5.0):
-    """2-byte messages from sock up to and including the first of until_kind."""
-    sock.settimeout(timeout)
-    out, buf = [], b""
-    while True:
-        chunk = sock.recv(2 - len(buf))
-        assert chunk, "medium closed the connection"
-        buf += chunk
-        if len(buf) == 2:
-            out.append((buf[0], buf[1]))
-            buf = b""
-            if out[-1][0] == until_kind:
-                return out
-
-
 def test_host_peer_is_paced_in_the_boards_virtual_time(medium_factory):
     """A paced station's transmission lasts its air time in lock-step rounds
     (the fix of net/README.md "Fixed bugs"), not in wall time."""
     m = medium_factory()
     board, peer = Station(m.sock, 1), Station(m.sock, 9)
     board.selects(1)
-    peer.s.sendall(bytes((4, 19200 // 300)))     # pace me at 19200 baud
-    board.s.sendall(bytes((3, 0)))               # the board joins the lock step
-    read_msgs(board.s, 3)
+    peer.pace(19200)                             # pace me at 19200 baud
+    board.sync_round()                           # the board joins the lock step
     frame = bytes(range(20))                     # 20 x 0.52 ms = 10.4 ms = 21 rounds
     peer.selects(2)
     peer.send(frame)
@@ -173,8 +98,7 @@ def test_host_peer_is_paced_in_the_boards_virtual_time(medium_factory):
     heard, heard_at, carrier_rounds = bytearray(), [], set()
     carrier = 0
     for rnd in range(1, 41):
-        board.s.sendall(bytes((3, 0)))
-        for kind, value in read_msgs(board.s, 3):
+        for kind, value in board.sync_round():
             if kind == 0:
                 heard.append(value)
                 heard_at.append(rnd)
@@ -186,17 +110,17 @@ def test_host_peer_is_paced_in_the_boards_virtual_time(medium_factory):
     # character k reaches the air (k + 1) character times after the start
     assert heard_at == [-(-(k + 1) * 520833 // 500000) for k in range(20)], heard_at
     assert 20 <= len(carrier_rounds) <= 22, sorted(carrier_rounds)
-    assert read_msgs(peer.s, 4)[-1] == (4, 1)    # "over, paced"
+    assert peer.read_msgs(MSG_PACE)[-1] == (MSG_PACE, 1)    # "over, paced"
 
 
 def test_host_peer_alone_is_not_paced(medium_factory):
     m = medium_factory()
     listener, peer = Station(m.sock, 1), Station(m.sock, 9)
     listener.selects(1)
-    peer.s.sendall(bytes((4, 19200 // 300)))
+    peer.pace(19200)
     time.sleep(0.1)
     peer.selects(2)
     peer.send(b"at once")
     peer.selects(1)
     assert listener.drain()[0] == b"at once"
-    assert read_msgs(peer.s, 4)[-1] == (4, 0)    # "over, not paced": pace yourself
+    assert peer.read_msgs(MSG_PACE)[-1] == (MSG_PACE, 0)    # "over, not paced": pace yourself

@@ -2,80 +2,30 @@
 "Clock"; net/README.md, "Fixed bugs"): the medium's 05 k messages, the
 PeerClock that counts them, and a peer that waits for a slow board without
 retransmitting."""
-import os
-import socket
-import sys
-import tempfile
 import threading
 import time
 
 import pytest
 
-ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from netpeer import MediumTransport, Peer                      # noqa: E402
-from netpeer.netnode import MediumProcess                      # noqa: E402
-from netpeer.protocol import ACK, Frame, FrameDecoder, encode_frame   # noqa: E402
-from netpeer.transport import PeerClock                        # noqa: E402
-
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC, MSG_PACE, MSG_CLOCK = 0, 1, 2, 3, 4, 5
+from medium_station import MSG_CLOCK, MSG_DATA, Station
+from netpeer import MediumTransport, Peer                      # tools/ (conftest.py)
+from netpeer.protocol import ACK, Frame, FrameDecoder, encode_frame
+from netpeer.transport import PeerClock
 
 
-@pytest.fixture
-def medium():
-    m = MediumProcess(os.path.join(tempfile.mkdtemp(), "air.sock"))
-    yield m
-    m.stop()
-
-
-def connect(path, number):
-    s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-    s.connect(path)
-    s.sendall(bytes((MSG_HELLO, number)))
-    return s
-
-
-def messages(sock, wait, until=None):
-    """The 2-byte messages that arrive within wait seconds (or up to the
-    message until, if it comes first)."""
-    sock.settimeout(0.05)
-    buf, end = b"", time.monotonic() + wait
-    while time.monotonic() < end:
-        try:
-            chunk = sock.recv(4096)
-        except socket.timeout:
-            continue
-        if not chunk:
-            break
-        buf += chunk
-        got = [(buf[i], buf[i + 1]) for i in range(0, len(buf) & ~1, 2)]
-        if until in got:
-            return got
-    return [(buf[i], buf[i + 1]) for i in range(0, len(buf) & ~1, 2)]
-
-
-def sync_round(board):
-    board.sendall(bytes((MSG_SYNC, 0)))
-    board.settimeout(5)
-    buf = b""
-    while True:
-        buf += board.recv(2 - len(buf) % 2 or 2)
-        if len(buf) % 2 == 0 and buf[-2] == MSG_SYNC:
-            return
-
-
-def test_medium_tells_paced_stations_the_boards_time(medium):
-    board, peer, plain = connect(medium.sock, 1), connect(medium.sock, 9), connect(medium.sock, 2)
-    peer.sendall(bytes((MSG_PACE, 19200 // 300)))
+def test_medium_tells_paced_stations_the_boards_time(medium_factory):
+    medium = medium_factory()
+    board, peer, plain = (Station(medium.sock, n) for n in (1, 9, 2))
+    peer.pace(19200)
     time.sleep(0.1)
     for _ in range(7):                               # 7 rounds of 500 us = 350 x 10 us
-        sync_round(board)
-    told = [v for k, v in messages(peer, 0.3) if k == MSG_CLOCK]
+        board.sync_round()
+    told = [v for k, v in peer.messages(0.3) if k == MSG_CLOCK]
     assert told == [50] * 7
-    board.close()                                    # the last board leaves the lock step
-    assert (MSG_CLOCK, 0) in messages(peer, 5.0, until=(MSG_CLOCK, 0))
+    board.s.close()                                  # the last board leaves the lock step
+    assert (MSG_CLOCK, 0) in peer.messages(5.0, until=(MSG_CLOCK, 0))
     # a station that did not ask to be paced keeps no clock
-    assert all(k != MSG_CLOCK for k, _ in messages(plain, 0.1))
+    assert all(k != MSG_CLOCK for k, _ in plain.messages(0.1))
 
 
 def test_clock_counts_virtual_time_only_while_told():
@@ -122,8 +72,8 @@ class SlowBoard:
     frame ACK_ROUNDS rounds after it heard it."""
 
     def __init__(self, path, station, rounds_per_s, ack_rounds):
-        self.s = connect(path, station)
-        self.s.sendall(bytes((MSG_CONTROL, 1)))          # RX select
+        self.radio = Station(path, station)
+        self.radio.selects(1)                            # RX
         self.station, self.rate, self.ack_rounds = station, rounds_per_s, ack_rounds
         self.decoder, self.heard, self.running = FrameDecoder(), [], True
         self.thread = threading.Thread(target=self.run, daemon=True)
@@ -131,45 +81,36 @@ class SlowBoard:
 
     def run(self):
         due, rnd = [], 0
-        self.s.settimeout(5)
         while self.running:
-            self.s.sendall(bytes((MSG_SYNC, 0)))
-            buf = b""
-            while True:
-                try:
-                    chunk = self.s.recv(4096)
-                except OSError:
-                    return
-                if not chunk:
-                    return
-                buf += chunk
-                if len(buf) % 2 == 0 and buf[-2] == MSG_SYNC:
-                    break
+            try:
+                round_msgs = self.radio.sync_round()
+            except (OSError, AssertionError):            # stopped, or the medium left
+                return
             rnd += 1
-            data = bytes(buf[i + 1] for i in range(0, len(buf), 2) if buf[i] == MSG_DATA)
+            data = bytes(v for k, v in round_msgs if k == MSG_DATA)
             for f in self.decoder.feed(data):
                 if f.dst == self.station:
                     self.heard.append(rnd)
                     due.append((rnd + self.ack_rounds, f))
             for when, f in [d for d in due if d[0] <= rnd]:
                 due.remove((when, f))
-                ack = encode_frame(Frame(self.station, f.src, ACK, f.seq)) + b"\x55"
-                self.s.sendall(bytes((MSG_CONTROL, 2)) +
-                               b"".join(bytes((MSG_DATA, b)) for b in ack) +
-                               bytes((MSG_CONTROL, 1)))
+                self.radio.selects(2)                    # TX
+                self.radio.send(encode_frame(Frame(self.station, f.src, ACK, f.seq)) + b"\x55")
+                self.radio.selects(1)
             time.sleep(1 / self.rate)
 
     def stop(self):
         self.running = False
         self.thread.join(timeout=5)
-        self.s.close()
+        self.radio.s.close()
 
 
-def test_peer_waits_for_a_slow_board_in_the_boards_time(medium):
+def test_peer_waits_for_a_slow_board_in_the_boards_time(medium_factory):
     """The board answers 20 rounds (10 ms of its time) after the frame, but
     at 40 rounds a second that is half a second of wall time, longer than the
     peer's first retransmission timeout (0.25-0.31 s). Timed in wall time the
     peer retransmitted; timed in the boards' time it must not."""
+    medium = medium_factory()
     board = SlowBoard(medium.sock, 1, rounds_per_s=40, ack_rounds=20)
     try:
         with Peer(MediumTransport(medium.sock), 9) as peer:
