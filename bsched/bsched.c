@@ -412,6 +412,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     }
     /*@ ghost lemma_wait_form(pv, count); */
     maxpv = plan_classes(&classes, pv, count);
+    /*@ assert maxpv_pre: maxpv == \at(max_pv(pv, count), Pre) <= BSCHED_MAX_PV; */
     /* The class table of bsched_step, before place_processes moves the cursors. */
     /*@ ghost lemma_first(pv, count); */
     /*@ loop invariant 0 <= pvk <= BSCHED_MAX_PV + 1;
@@ -441,6 +442,10 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
                 s->class_limit[pvk] == class_limit_of(class_count(pv, count, pvk), pvk); */
     }
     place_processes(s, &classes, pv, count);
+    /* The order in terms of the input as it was on entry: what sorted_slots below
+     * needs, stated where little else is known. */
+    /*@ assert order_pre: \forall integer d; 0 <= d < n ==>
+            s->order[d] < n && \let x = s->order[d]; \at(sorted_pos(pv, count, x), Pre) == d; */
     perfect = perfect_load(&classes, pv, count);
     minpv = maxpv;
     /*@ loop invariant 0 <= i <= n;
@@ -466,6 +471,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     s->cycle = 0u;
     s->reversed = 0u;
     s->ran_count = 0u;
+    /* ok_maxpv where s->maxpv was just written (at the end it took CVC4 16 s). */
+    /*@ assert maxpv_stored: s->maxpv == \at(max_pv(pv, count), Pre); */
     /*@ assert wf_sizes: 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
             1 <= s->perfect <= s->count && s->cycle < pow2(s->maxpv); */
     /*@ assert wf_procs: \forall integer j; 0 <= j < s->count ==>
@@ -475,7 +482,9 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /*@ assert pv_copied: \forall integer j; 0 <= j < n ==> (&s->pv[0])[j] == \at(pv[j], Pre); */
     /* The class layout of the copy: sizes, first slots and starts, one invariant
      * each (together, same_first and same_start were one goal that CVC5 proved
-     * in 32 s under x86_64 and no prover proved under -machdep x86_32). */
+     * in 32 s under x86_64 and no prover proved under -machdep x86_32). The asserts
+     * in the second loop's body are the steps of same_start, class_start unfolded
+     * once on each side: without them its preservation took CVC5 31 s (CVC4 timed out). */
     /*@ ghost
       uint32_t m = 0u;
       int k = 0;
@@ -502,6 +511,15 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
          loop variant BSCHED_MAX_PV + 1 - k;
       @/
       while (k < BSCHED_MAX_PV + 1) {
+        /@ assert sum_at_k: \let j = k; class_start(&s->pv[0], count, j) +
+               class_count(&s->pv[0], count, j) ==
+               \at(class_start(pv, count, j) + class_count(pv, count, j), Pre); @/
+        /@ assert unfold_here: class_start(&s->pv[0], count, k + 1) ==
+               2 * ((class_start(&s->pv[0], count, k) + class_count(&s->pv[0], count, k)) % pow2(k)); @/
+        /@ assert unfold_pre: \let j = k; \at(class_start(pv, count, j + 1), Pre) ==
+               2 * (\at(class_start(pv, count, j) + class_count(pv, count, j), Pre) % pow2(j)); @/
+        /@ assert start_next: \let j = k + 1; class_start(&s->pv[0], count, j) ==
+               \at(class_start(pv, count, j), Pre); @/
         k = k + 1;
       }
     */
@@ -519,12 +537,19 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /*@ ghost lemma_wait_form(&s->pv[0], count); */
     /*@ assert same_wait: \forall integer j; 0 <= j < n ==>
             init_wait(&s->pv[0], count, j) == \at(init_wait(pv, count, j), Pre); */
+    /* order_pre again, here: with it, sorted_slots takes CVC4 2 s instead of 28-30 s. */
+    /*@ assert order_late: \forall integer d; 0 <= d < n ==>
+            s->order[d] < n && \let x = s->order[d]; \at(sorted_pos(pv, count, x), Pre) == d; */
     /*@ assert sorted_slots: \forall integer d; 0 <= d < n ==>
             s->order[d] < n && sorted_pos(&s->pv[0], count, s->order[d]) == d; */
     /*@ assert sorted_procs: \forall integer j; 0 <= j < n ==>
             0 <= sorted_pos(&s->pv[0], count, j) < n && s->order[sorted_pos(&s->pv[0], count, j)] == j; */
     /*@ assert closed: \forall integer j; 0 <= j < n ==>
             s->offset[j] == init_wait(&s->pv[0], count, j); */
+    /* ok_closed_form in the ensures' own terms: with it the ensures takes CVC4 3 s
+     * (without: CVC5 15 s, CVC4 90 s). */
+    /*@ assert closed_pre: \forall integer i; 0 <= i < count ==>
+            s->offset[i] == \at(init_wait(pv, count, i), Pre); */
     /*@ ghost
       int c = BSCHED_MAX_PV + 1;
       /@ loop invariant c_range: 1 <= c <= BSCHED_MAX_PV + 1;
@@ -1025,6 +1050,11 @@ int32_t bsched_step(struct bsched *s)
     /*@ assert ran_exact_kept: \forall integer i; 0 <= i < s->count ==>
             ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ assert sizes_same: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre); */
+    /* order[] shares its memory type with ran[] and ran_count: said once, the
+     * goals about the state as a whole need not each show it (sorted_same took
+     * CVC4 13 s without it). */
+    /*@ assert order_same: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==>
+            s->order[d] == \at(s->order[d], Pre); */
     /*@ assert wf_kept: well_formed(s); */
     /*@ assert sorted_same: sorted_order(s); */
     /*@ assert table_kept: class_table(s); */
