@@ -54,7 +54,6 @@ def air():
     a.close()
 
 
-
 @pytest.fixture
 def medium_factory():
     """make(**faults): a medium of its own (no boards), stopped at the end."""
