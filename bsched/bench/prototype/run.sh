@@ -15,9 +15,11 @@ if [ ! -f "$patch_file" ]; then
     echo "bench-prototype: no prototype '$name' (have: $(cd "$root/bsched/bench/prototype" && ls step-*.patch | sed 's/^step-//; s/\.patch$//' | tr '\n' ' '))" >&2
     exit 2
 fi
-# The patches are against the tree before v11 landed in bsched.c (README.md here):
-# the copy is that commit's tree, not the checkout's.
-base=${PROTOTYPE_BASE:-ea02446}
+# v7, v9 and v10 are against the tree before v11 landed in bsched.c (README.md
+# here); a later patch names its own base in a first line "base: COMMIT" (patch
+# skips the lines before the diff). The copy is that commit's tree, not the checkout's.
+named_base=$(sed -n '1s/^base: *\([0-9a-f]\{7,40\}\) *$/\1/p' "$patch_file")
+base=${PROTOTYPE_BASE:-${named_base:-ea02446}}
 tree=$build/prototype-$name
 rm -rf "$tree"
 mkdir -p "$tree"
