@@ -535,7 +535,9 @@
 */
 
 /* slots_slot_ok for the slots of one class, with the class's own k in place
- * of pv[order[d]] (the slot ranges are disjoint). */
+ * of pv[order[d]] (the slot ranges are disjoint). in_class_ok states the slot
+ * fact with pv[order[d]] named before in_class_due puts k in its place: in one
+ * step, CVC5 took 15-17 s. */
 /*@ ghost
   /@ requires \valid_read(s) && well_formed(s);
      requires slots: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
@@ -558,6 +560,12 @@
     /@ assert in_class: \forall integer k, d; lo <= k <= hi &&
            class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
            0 <= d < s->count && slots_slot_ok(s, t, d) && s->pv[s->order[d]] == k && s->order[d] < s->count; @/
+    /@ assert in_class_ok: \forall integer k, d; lo <= k <= hi &&
+           class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+           \let q = s->pv[s->order[d]]; q == k &&
+           (t % pow2(q) == s->offset[s->order[d]] <==>
+            (class_area(&s->pv[0], s->count, q) + (d - class_first(&s->pv[0], s->count, q))) % pow2(q) ==
+               rev(q, t % pow2(q))); @/
     /@ assert in_class_due: \forall integer k, d; lo <= k <= hi &&
            class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
            (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
@@ -566,13 +574,17 @@
   }
 */
 
-/* The same by member: member j of class k is slot class_first(k) + j. */
+/* The same by member: member j of class k is slot class_first(k) + j. It
+ * starts from step_class_due's result (class_due_slots), not from the slot
+ * facts again: re-deriving them here took CVC5 25-30 s per assertion. */
 /*@ ghost
   /@ requires \valid_read(s) && well_formed(s);
-     requires slots: \forall integer d; 0 <= d < s->count ==> slots_slot_ok(s, t, d);
-     requires first_next: \forall integer k; lo <= k <= hi ==>
-         0 <= class_first(&s->pv[0], s->count, k) &&
-         class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k + 1) <= s->count;
+     requires class_due_slots: \forall integer k, d; lo <= k <= hi &&
+         class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
+         s->order[d] < s->count &&
+         (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
+          residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)),
+                     d - class_first(&s->pv[0], s->count, k)));
      requires 0 <= lo && hi <= BSCHED_MAX_PV;
      assigns \nothing;
      ensures member_due: \forall integer k; lo <= k <= hi ==> class_member_due_at(s, t, k);
@@ -580,9 +592,6 @@
   void step_class_member_due(struct bsched *s, uint32_t t, int lo, int hi)
   {
     lemma_first(s->pv, s->count);
-    /@ assert in_class: \forall integer k, d; lo <= k <= hi &&
-           class_first(&s->pv[0], s->count, k) <= d < class_first(&s->pv[0], s->count, k + 1) ==>
-           0 <= d < s->count && slots_slot_ok(s, t, d) && s->pv[s->order[d]] == k && s->order[d] < s->count; @/
     /@ assert by_member: \forall integer k, j; lo <= k <= hi && 0 <= j < class_count(&s->pv[0], s->count, k) ==>
            class_first(&s->pv[0], s->count, k) <= class_first(&s->pv[0], s->count, k) + j <
            class_first(&s->pv[0], s->count, k + 1); @/
@@ -590,7 +599,7 @@
            \let d = class_first(&s->pv[0], s->count, k) + j;
            s->order[d] < s->count &&
            (t % pow2(s->pv[s->order[d]]) == s->offset[s->order[d]] <==>
-            (class_area(&s->pv[0], s->count, k) + j) % pow2(k) == rev(k, t % pow2(k))); @/
+            residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)), j)); @/
     /@ assert by_member_at: \forall integer k, j; lo <= k <= hi && 0 <= j < class_count(&s->pv[0], s->count, k) &&
            residue_at(class_area(&s->pv[0], s->count, k), pow2(k), rev(k, t % pow2(k)), j) ==>
            s->order[class_first(&s->pv[0], s->count, k) + j] < s->count &&

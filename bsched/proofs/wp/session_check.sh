@@ -2,7 +2,8 @@
 # session_check.sh SESSION_TSV OUT_DIR RESULT_FILE: the proof session does what make
 # prove relies on, on period_of's one prover goal (typed_period_of_ensures_is_pow2):
 # the session names a prover for it, and replaying the session proves it with that
-# prover alone (WP's JSON report lists no other prover for the goal).
+# prover alone (WP's JSON report lists no other prover for the goal). Also that the
+# goal times of a log (the session's seconds column) are read right.
 # That a goal whose script fails is then raced was checked by hand, 2026-11-27: a
 # script naming CVC5 for word_slot's x_split, which CVC5 did not prove within that
 # run's 20 s backstop, cost those 20 s, then the race proved the goal with Z3. WP
@@ -43,6 +44,21 @@ if [ -n "$recorded" ] && [ "$provers" = "$recorded=valid" ]; then
 else
     bad "replayed: expected $recorded=valid alone, got '${provers:-no report}' ($out/replay.log)"
 fi
+
+# The seconds column comes from the goal lines' times; a minute or more is printed
+# as 1'14s, which was once read as the Qed time before it (0.89 s for 74 s).
+if python3 - "$root/bsched/proofs/wp" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[1])
+from wp_report import seconds
+cases = {" : Valid (Qed:888ms) (1'14s) (1168630)": 74.0, " : Valid (Qed:678ms) (43.9s) (967767)": 43.9,
+         " : Valid (380ms)": 0.38, " : Valid (1h2')": 3720.0, " : Valid (Qed:45ms)": 0.045}
+wrong = {line: seconds(line) for line, want in cases.items() if abs(seconds(line) - want) > 1e-9}
+print("wrong:", wrong) if wrong else None
+sys.exit(1 if wrong else 0)
+PY
+then ok "goal times read as Frama-C prints them (ms, s, minutes, hours)"
+else bad "goal times misread (wp_report.seconds)"; fi
 
 mkdir -p "$(dirname "$result")"
 echo "$pass passed, $fail failed" > "$result"

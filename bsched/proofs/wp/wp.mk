@@ -22,7 +22,7 @@ WP_PROVERS  ?= cvc4,z3-qi,cvc5
 # A goal cut by steps is reported as "Step limit" by all three (why3-config.sh). The
 # wall-clock timeout is only a backstop against a prover that hangs: Why3 kills a
 # step-limited call after 2 x WP_TIMEOUT + 1 s and reports Timeout from 0.9 x WP_TIMEOUT.
-WP_STEPS    ?= 2400000
+WP_STEPS    ?= 2500000
 export WP_STEPS_Z3 ?= 13000000
 WP_TIMEOUT  ?= 600
 # Prover jobs per Frama-C process: prover start-up, not CPU, bounds a run.

@@ -24,7 +24,9 @@ GOAL_LINE = re.compile(
     r"^\[wp\] \[(?P<prover>[^\]]+)\] Goal (?P<goal>\S+)(?: : (?P<status>\w+)(?P<rest>.*))?$")
 # After '[wp] [Failed] Goal NAME', one indented line per prover tried.
 ATTEMPT_LINE = re.compile(r"^  (?P<prover>[A-Za-z][^:]*): (?P<status>\w+)(?P<rest>.*)$")
-TIME = re.compile(r"\((?:Qed:)?([0-9.]+)(ms|s)\)")
+# Frama-C prints a time as 380ms, 1.9s, 1'14s (a minute and 14 s) or 1h2' (an hour
+# and 2 minutes), after "Qed:" for the time of its own simplifier.
+TIME = re.compile(r"\((?:Qed:)?(?:(\d+)h)?(?:(\d+)')?(?:([0-9.]+)(ms|s))?\)")
 # Goal names are typed_<function>_<kind...>; lemma goals are typed_lemma_<name>.
 KINDS = [
     ("assert_rte", "rte"), ("loop_invariant", "loop invariant"), ("loop_variant", "termination"),
@@ -44,10 +46,16 @@ def short(prover):
 
 
 def seconds(rest):
-    total = 0.0
-    for value, unit in TIME.findall(rest):
-        total = max(total, float(value) / (1000.0 if unit == "ms" else 1.0))
-    return total
+    """The longest time in a goal line's tail (the prover's, or Qed's if longer)."""
+    longest = 0.0
+    for hours, minutes, value, unit in TIME.findall(rest):
+        if not (hours or minutes or value):
+            continue  # "()" or a step count: no time
+        t = int(hours or 0) * 3600.0 + int(minutes or 0) * 60.0
+        if value:
+            t += float(value) / (1000.0 if unit == "ms" else 1.0)
+        longest = max(longest, t)
+    return longest
 
 
 def script_prover(wp, goal):
