@@ -898,7 +898,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         to = collect_class(s, k, word, to) /*@ ghost (t, top, low, e * f, out, done) */;
         /* order[] after the call, said once: the preserved `kept_order` and the
          * postcondition `kept` then follow at once (they took CVC4 74 s and 44 s;
-         * this assertion takes it 35-40 s, the frame of the call among this
+         * this assertion takes it 35-45 s, the frame of the call among this
          * loop's hypotheses). */
         /*@ assert order_kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre); */
         /*@ ghost done = (size_t)(to - out); */
