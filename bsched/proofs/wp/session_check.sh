@@ -54,8 +54,8 @@ from wp_report import seconds
 cases = {" : Valid (Qed:888ms) (1'14s) (1168630)": 74.0, " : Valid (Qed:678ms) (43.9s) (967767)": 43.9,
          " : Valid (380ms)": 0.38, " : Valid (1h2')": 3720.0, " : Valid (Qed:45ms)": 0.045}
 wrong = {line: seconds(line) for line, want in cases.items() if abs(seconds(line) - want) > 1e-9}
-print("wrong:", wrong) if wrong else None
-sys.exit(1 if wrong else 0)
+if wrong:
+    sys.exit("wrong: %r" % wrong)
 PY
 then ok "goal times read as Frama-C prints them (ms, s, minutes, hours)"
 else bad "goal times misread (wp_report.seconds)"; fi

@@ -6,6 +6,7 @@ import pytest
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
 sys.path.insert(0, os.path.join(ROOT, "tools"))
+sys.path.insert(0, os.path.join(ROOT, "emu"))   # radio_medium (medium_station.py)
 
 from netpeer.netnode import Board, MediumProcess   # noqa: E402
 

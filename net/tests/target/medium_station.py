@@ -1,15 +1,11 @@
 """A raw station on emu/radio_medium.py's socket, for the tests that speak the
 medium's 2-byte messages themselves (test_medium, test_peer_clock) instead of
 running a board or a host peer. The messages are in radio_medium.py's docstring."""
-import os
 import socket
-import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "emu"))
-# The message codes from the medium itself.
-from radio_medium import (MSG_CLOCK, MSG_CONTROL, MSG_DATA, MSG_HELLO,  # noqa: E402,F401
-                          MSG_PACE, MSG_SYNC)
+# The message codes from the medium itself (emu/ is on the path: conftest.py).
+from radio_medium import MSG_CLOCK, MSG_CONTROL, MSG_DATA, MSG_HELLO, MSG_PACE, MSG_SYNC  # noqa: F401
 
 
 class Station:
