@@ -19,6 +19,12 @@ PYTHON := $(BUILD)/venv/bin/python
 # Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
 record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
 
+# The compiler runtime built for the CPU32 (soft-float, 64-bit division: LLVM's
+# compiler-rt builtins, ci/setup.d/m68k.sh). Every firmware image links it instead
+# of Debian's m68k libgcc, which is built for the 68020/68881 and traps on the CPU32.
+# (ci/setup links it into this checkout's build/, whatever BUILD a make run uses.)
+CPU32_RT := $(ROOT)/build/cpu32-rt/libbuiltins.a
+
 HOST_CC     ?= cc
 HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
 

@@ -10,7 +10,7 @@
 #   make stack             worst-case stack of every firmware thread and the interrupt path
 #   make prove-machdeps    WP under x86_32, x86_64 and x86_16 (long)
 # Suites in make check: sanitize, bsched-edges, bsched-targets, bsched-bigendian, misra,
-# analyze, coverage, mutants-sample, stack, load-independence.
+# analyze, coverage, mutants-sample, stack, load-independence, cpu32-isa.
 
 ASSURE := $(BUILD)/assure
 ASSURE_PY := $(ROOT)/assure
@@ -18,7 +18,7 @@ ASSURE_PY := $(ROOT)/assure
 # The bsched host suites this stream adds or re-runs.
 HOST_UNIT_CHECKS += bsched-unit kernel-unit bsched-edges
 CHECKS += bsched-edges sanitize bsched-targets bsched-bigendian misra analyze coverage \
-          mutants-sample stack load-independence wp-step-limits
+          mutants-sample stack load-independence wp-step-limits cpu32-isa
 
 # ---------------------------------------------------------------- edge tests of bsched.c
 $(BUILD)/tests/test_bsched_edges: bsched/tests/test_bsched_edges.c bsched/bsched.c bsched/bsched.h
@@ -120,6 +120,24 @@ stack check-stack:
 	@mkdir -p $(ASSURE) && $(MAKE) --no-print-directory BUILD=$(STACK_BUILD) FW_STACK_INFO=1 firmware-all > $(STACK_BUILD).log 2>&1 || \
 	    { tail -20 $(STACK_BUILD).log; $(call record,stack,0,1); exit 1; }
 	@$(ASSURE_PY)/stack.py --build $(STACK_BUILD)/firmware --apps "$(APPS)" --gate $(STACK_GATE) --suite stack
+
+# ---------------------------------------------------------------- CPU32 instructions only
+# Every firmware image (apps/*, the fault images, the kernel's test images, the
+# bench image) disassembled whole: no instruction the CPU32 lacks (bit field,
+# FPU/coprocessor, CAS/CAS2, CALLM/RTM, PACK/UNPK, memory-indirect addressing).
+# The probe linked with Debian's m68k libgcc must fail the same scan.
+CPU32_ISA_PROBE := $(ASSURE)/cpu32-isa/libgcc-68020-probe.elf
+$(CPU32_ISA_PROBE): assure/cpu32_isa_probe.c
+	@mkdir -p $(@D)
+	$(CROSS_CC) -mcpu=cpu32 -Os -nostdlib -o $@ $< -lgcc
+CPU32_ISA_ELFS = $(foreach a,$(APPS),$(call app_elf,$(a))) $(FW_FAULT_ELFS) $(K_TEST_ELFS) \
+                 $(BENCH_DIR)/bench-cpu32.elf
+.PHONY: check-cpu32-isa
+check-cpu32-isa:
+	@$(SETUP) base m68k
+	@$(MAKE) --no-print-directory $(CPU32_ISA_ELFS) $(CPU32_ISA_PROBE)
+	@$(PYTHON) $(ASSURE_PY)/cpu32_isa.py --suite cpu32-isa --expect-bad $(CPU32_ISA_PROBE) \
+	    $(CPU32_ISA_ELFS)
 
 # ---------------------------------------------------------------- load independence
 # table1 twice on the emulator: alone, and with every core busy; the console

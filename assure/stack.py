@@ -3,8 +3,9 @@
 
 For each image in apps/*, built with -fstack-usage -fcallgraph-info=su
 (make stack builds them into build/assure/stack), this reads every .ci file
-(GCC's call graph with each function's frame size), adds the assembly routines
-and libgcc helpers that have no .ci (fixed sizes below), and walks the graph:
+(GCC's call graph with each function's frame size; the compiler runtime's come
+from its build, build/cpu32-rt/ci), adds the assembly routines that have no .ci
+(fixed sizes below), and walks the graph:
 
 - a direct call adds the callee's frame plus the 4-byte return address;
 - an indirect call (`__indirect_call`) may reach any function whose address
@@ -46,7 +47,8 @@ import sys
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 CROSS = 'm68k-linux-gnu-'
 RET = 4                      # return address of a jsr/bsr
-# Routines without a .ci file: assembly (kernel/arch/cpu32/*.S) and libgcc.
+# Routines without a .ci file: assembly (kernel/arch/cpu32/*.S). The compiler runtime
+# (build/cpu32-rt, ci/setup.d/m68k.sh) comes with its .ci files.
 ASM_FRAMES = {
     'k_arch_switch': 2 + 11 * 4,          # SR + d2-d7/a2-a6
     'k_isr_entry': 8 + 4 * 4 + 4,         # format-0 exception frame + d0-d1/a0-a1 + vector argument
@@ -59,7 +61,7 @@ ENTRY_HW = 8                 # CPU32 format-0 interrupt frame: SR, PC, format/ve
 ENTRY_SR = 2                 # the SR with this interrupt's level, pushed before masking
 ENTRY_REGS = 16              # d0-d1/a0-a1
 ENTRY_ARGS = 12              # on the interrupt stack: interrupted SP, SR, vector
-LIBGCC_FRAME = 32            # libgcc's m68k arithmetic helpers are leaves with small frames
+UNKNOWN_FRAME = 32           # assumed for a routine with no .ci file (listed in the report)
 
 
 def parse_ci(paths):
@@ -88,6 +90,27 @@ def parse_ci(paths):
         plain = src.rsplit(':', 1)[1] if ':' in src else src
         plain_edges.setdefault(plain, set()).update(t.rsplit(':', 1)[1] if ':' in t else t for t in targets)
     return frames, plain_edges, dynamic
+
+
+def add_aliases(archive, frames, edges):
+    """Gives each alias of the archive (a second global name at the same address
+    in one object: compiler-rt defines __ltsf2, __eqsf2 and __nesf2 as __lesf2)
+    the frame and callees of the name its .ci file titles."""
+    if not os.path.isfile(archive):
+        return
+    out = subprocess.run([CROSS + 'nm', '-A', '--defined-only', archive], check=True,
+                         capture_output=True, text=True).stdout
+    at = {}
+    for line in out.splitlines():
+        m = re.match(r'(\S+):\s*([0-9a-f]+) T (\S+)$', line)
+        if m:
+            at.setdefault((m.group(1), m.group(2)), []).append(m.group(3))
+    for names in at.values():
+        known = [n for n in names if n in frames]
+        for n in names:
+            if known and n not in frames:
+                frames[n] = frames[known[0]]
+                edges[n] = set(edges.get(known[0], ()))
 
 
 def address_taken(objs, edges):
@@ -277,7 +300,7 @@ class Graph:
             own = self.frames[f]
         else:
             self.unknown.add(f)
-            own = LIBGCC_FRAME
+            own = UNKNOWN_FRAME
         callees = set(self.edges.get(f, ()))
         if f == 'k_arch_thread_trampoline':
             callees.add('k_thread_start')
@@ -402,12 +425,14 @@ def main():
         if not os.path.exists(elf):
             print('%s: no image %s' % (app, elf)); bad += 1; continue
         cis = glob.glob(os.path.join(a.build, 'obj', '**', '*.ci'), recursive=True) + \
-            glob.glob(os.path.join(a.build, app, '**', '*.ci'), recursive=True)
+            glob.glob(os.path.join(a.build, app, '**', '*.ci'), recursive=True) + \
+            glob.glob(os.path.join(ROOT, 'build', 'cpu32-rt', 'ci', '*.ci'))
         objs = glob.glob(os.path.join(a.build, 'obj', '**', '*.o'), recursive=True) + \
             glob.glob(os.path.join(a.build, app, 'obj', '**', '*.o'), recursive=True)
         if not cis:
             print('%s: no .ci files (build with FW_STACK_INFO=1)' % app); bad += 1; continue
         frames, edges, dynamic = parse_ci(cis)
+        add_aliases(os.path.join(ROOT, 'build', 'cpu32-rt', 'libbuiltins.a'), frames, edges)
         linked = elf_functions(elf)
         sources = sorted(set(glob.glob(os.path.join(ROOT, 'apps', app, '*.c')) +
                              glob.glob(os.path.join(ROOT, 'kernel', '*.c')) +
@@ -475,7 +500,7 @@ def main():
         big = sorted(((g.frames[f], f) for f in g.frames if ':' not in f and f in linked), reverse=True)[:8]
         print('   largest frames: %s' % ', '.join('%s %d' % (f, n) for n, f in big))
         if g.unknown:
-            print('   no .ci (assumed %d bytes each, libgcc/asm): %s' % (LIBGCC_FRAME, ', '.join(sorted(g.unknown))))
+            print('   no .ci (assumed %d bytes each): %s' % (UNKNOWN_FRAME, ', '.join(sorted(g.unknown))))
     if at_risk:
         print('%d threads fit their own calls but not with the interrupts (AT RISK, '
               'reported; --gate full fails on them)' % at_risk)

@@ -127,7 +127,7 @@ static int motor_check(unsigned m)
 
 /* counts / (ticks / TCR1_HZ). TCR1_HZ is 2^20: with fewer than 2^11 counts
  * the product fits 32 bits and the CPU32's DIVS.L does it; more (only at
- * very high speeds) takes libgcc's 64-bit division. */
+ * very high speeds) takes the compiler runtime's 64-bit division. */
 static int32_t motor_counts_per_s(int32_t counts, uint16_t ticks)
 {
     if (counts > -2048 && counts < 2048)

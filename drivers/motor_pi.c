@@ -1,5 +1,5 @@
 /* PI speed controller of the motors: see motor_pi.h. 64-bit intermediates
- * (libgcc on the CPU32): gain times error overflows 32 bits at the top of
+ * (the compiler runtime on the CPU32): gain times error overflows 32 bits at the top of
  * the gain range. */
 #include "drivers/motor_pi.h"
 
@@ -46,7 +46,7 @@ int32_t motor_pi_step(struct motor_pi *pi, int32_t setpoint, int32_t measured, u
      * (relative error 8e-6); dt_us <= 10^6 keeps the product in 32 bits. */
     uint32_t dt_q16 = ((dt_us > PI_DT_MAX_US ? PI_DT_MAX_US : dt_us) * 4295u) >> 16;
     /* ki < 2^18, |error| <= 2^25, dt_q16 <= 2^16: the product fits 63 bits.
-     * No 64-bit division (a libgcc loop on the CPU32): a power of two. */
+     * No 64-bit division (a compiler runtime loop on the CPU32): a power of two. */
     int64_t di = (int64_t)pi->ki * error * (int64_t)dt_q16 / 65536;
     int64_t integral = pi->integral;
     int64_t unclamped = p + integral + di;

@@ -47,6 +47,9 @@ CHECKS += firmware-boot
 .PHONY: firmware-tests check-firmware-boot
 firmware-tests: $(call app_elf,table1) $(FW_FAULT_ELFS)
 
+$(CPU32_RT):
+	@$(SETUP) m68k
+
 $(FW_BUILD)/obj/%.c.o: %.c
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<

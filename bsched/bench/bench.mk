@@ -31,8 +31,8 @@ $(BENCH_DIR)/cpu32/%.S.o: %.S
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
 
-$(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) kernel/arch/cpu32/robocube.ld
-	$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(BENCH_FW_OBJS) -lgcc
+$(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) kernel/arch/cpu32/robocube.ld $(CPU32_RT)
+	$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(BENCH_FW_OBJS) $(CPU32_RT)
 
 .PHONY: bench
 bench:

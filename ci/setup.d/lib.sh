@@ -20,3 +20,23 @@ apt_install() {
     fi
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}" >&2
 }
+
+# fetch_debian_source PACKAGE DIR: downloads bookworm's source package PACKAGE
+# (its .dsc, orig and debian tarballs) into DIR, through a private apt
+# configuration (its own sources list with deb-src entries, lists and cache
+# under DIR/../apt-src): the system's apt sources stay untouched.
+fetch_debian_source() {
+    local package=$1 dir=$2 apt_dir
+    apt_dir=$(dirname "$dir")/apt-src
+    mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
+    cat > "$apt_dir/sources.list" <<'SRC'
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian-security bookworm-security main
+SRC
+    local apt_opts=(-o "Dir::Etc::SourceList=$apt_dir/sources.list" -o Dir::Etc::SourceParts=/nonexistent
+                    -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache"
+                    -o APT::Sandbox::User=root -q)
+    apt-get "${apt_opts[@]}" update >&2
+    rm -rf "$dir" && mkdir -p "$dir"
+    (cd "$dir" && apt-get "${apt_opts[@]}" source --download-only "$package" >&2)
+}

@@ -7,9 +7,8 @@
 # directory but never run, or overwrite, each other's board model.
 # Rebuilds (incrementally, the build directory is kept) only when emu/ changed.
 #
-# Debian's source package is fetched with a private apt configuration (its own
-# sources list with a deb-src entry, its own lists and cache under
-# $BSCHED_TOOLS/qemu-src/apt): the system's apt sources stay untouched.
+# Debian's source package is fetched by fetch_debian_source (lib.sh): the
+# system's apt sources stay untouched.
 
 qemu_src=$BSCHED_TOOLS/qemu-src
 emu_dir=$BSCHED_ROOT/emu
@@ -52,19 +51,8 @@ apt_install dpkg-dev ninja-build meson pkg-config python3 libglib2.0-dev libpixm
 tree=$qemu_src/tree
 if [ ! -f "$tree/VERSION" ]; then
     echo "ci/setup: fetching bookworm's QEMU 7.2 source package into $qemu_src" >&2
-    apt_dir=$qemu_src/apt
-    mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
-    cat > "$apt_dir/sources.list" <<'EOF'
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian-security bookworm-security main
-EOF
-    apt_opts=(-o "Dir::Etc::SourceList=$apt_dir/sources.list" -o Dir::Etc::SourceParts=/nonexistent
-              -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache"
-              -o APT::Sandbox::User=root -q)
-    apt-get "${apt_opts[@]}" update >&2
     dl=$qemu_src/download
-    rm -rf "$dl" && mkdir -p "$dl"
-    (cd "$dl" && apt-get "${apt_opts[@]}" source --download-only qemu >&2)
+    fetch_debian_source qemu "$dl"
     dsc=$(ls "$dl"/qemu_7.2*.dsc 2>/dev/null | head -n1)
     if [ -z "$dsc" ]; then
         echo "ci/setup: no QEMU 7.2 source package found (got: $(ls "$dl"))" >&2

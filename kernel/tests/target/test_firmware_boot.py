@@ -266,32 +266,8 @@ def all_images():
     return [FIRMWARE] + [FAULT_IMAGES[k] for k in sorted(FAULT_IMAGES)]
 
 
-# Instructions of the 68020 the CPU32 lacks (CPU32RM appendix: no bit field,
-# CAS/CAS2, CALLM/RTM, PACK/UNPK, coprocessor or FPU instructions).
-FORBIDDEN = re.compile(r"(bf(chg|clr|exts|extu|ffo|ins|set|tst)|cas2?|callm|rtm|pack|unpk|"
-                       r"f[a-z]+|cp[a-z]+)$")
-
-
-def instructions(elf):
-    """(address, mnemonic, operands) of every instruction in .text."""
-    dis = subprocess.run([CROSS + "objdump", "-d", "-j", ".text", str(elf)], check=True,
-                         capture_output=True, text=True).stdout
-    for line in dis.splitlines():
-        fields = line.split("\t")
-        if len(fields) >= 3 and fields[0].strip().endswith(":"):
-            parts = fields[2].split(None, 1)
-            yield fields[0].strip()[:-1], parts[0], parts[1] if len(parts) > 1 else ""
-
-
-def test_images_use_only_cpu32_instructions():
-    for elf in all_images():
-        assert elf.is_file(), f"missing {elf}"
-        insns = list(instructions(elf))
-        assert len(insns) > 100
-        bad = [i for i in insns if FORBIDDEN.match(i[1].split(".")[0])]
-        # Memory-indirect addressing (MIT syntax "@(...)@(...)") is 68020-only too.
-        bad += [i for i in insns if re.search(r"@\([^)]*\)@", i[2])]
-        assert not bad, f"{elf.name}: non-CPU32 instructions: {bad[:20]}"
+# Every image uses only CPU32 instructions: assure/cpu32_isa.py (make check-cpu32-isa)
+# scans them all.
 
 
 def test_console_baud_variants_compile(tmp_path):

@@ -1,0 +1,18 @@
+# The compiler runtime checked on the board: int <-> float conversions, float and
+# double arithmetic, 64-bit division and shifts, dt() and (float)value(q) in a PDL
+# process, each compared with the host's result (apps/rtcheck/tests/).
+rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c
+
+RTCHECK_HOST := $(BUILD)/tests/rtcheck_host
+$(RTCHECK_HOST): apps/rtcheck/tests/host_main.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt_vectors.h
+	@mkdir -p $(@D)
+	$(HOST_CC) -std=c99 -O2 -Wall -Wextra -Werror -Iapps/rtcheck -o $@ apps/rtcheck/tests/host_main.c \
+	    apps/rtcheck/rt_vectors.c
+
+CHECKS += rtcheck
+.PHONY: check-rtcheck
+check-rtcheck:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=rtcheck $(RTCHECK_HOST)
+	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) RTCHECK_HOST=$(RTCHECK_HOST) \
+	    ci/pytest-suite rtcheck apps/rtcheck/tests
