@@ -24,6 +24,11 @@ record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1
 # of Debian's m68k libgcc, which is built for the 68020/68881 and traps on the CPU32.
 # (ci/setup links it into this checkout's build/, whatever BUILD a make run uses.)
 CPU32_RT := $(ROOT)/build/cpu32-rt/libbuiltins.a
+# The C library built for the CPU32 (newlib, ci/setup.d/m68k/newlib.sh): its headers
+# and libc.a/libm.a. Firmware sees only GCC's own headers and these (-nostdinc), never
+# a C library of the build machine.
+NEWLIB := $(ROOT)/build/newlib
+FW_LIBC_LIBS := $(NEWLIB)/lib/libc.a $(NEWLIB)/lib/libm.a
 
 HOST_CC     ?= cc
 HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror

@@ -6,8 +6,8 @@
 #                                or run the app's host runner if it names one
 #
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
-# console, PIT, LED, bsched.c: kernel/firmware.mk), the CPU32 compiler runtime
-# ($(CPU32_RT), kernel/firmware.mk), the nanokernel and the
+# console, PIT, LED, bsched.c: kernel/firmware.mk), the C library and the CPU32
+# compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel and the
 # libraries drivers/, net/ and pdl/ (every *.c directly in those folders; host
 # code and tests live in their subfolders). The kernel and the libraries are
 # compiled per image at the image's tick rate and linked as archives, so an
@@ -62,9 +62,10 @@ $$($(1)_DIR)/obj/%.S.o: %.S
 
 $$(foreach d,$$(APP_LIB_DIRS),$$(eval $$(call app_lib_template,$(1),$$(d))))
 
-$$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT)
+$$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT) \
+                       $$(FW_LIBC_LIBS)
 	$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
-	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) -Wl,--end-group $$(CPU32_RT)
+	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
 	$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
 	$$(CROSS_SIZE) $$@
 

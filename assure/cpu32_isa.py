@@ -30,21 +30,56 @@ FORBIDDEN = re.compile(r"(bf(chg|clr|exts|extu|ffo|ins|set|tst)|cas2?|callm|rtm|
 MEMORY_INDIRECT = re.compile(r"@\([^)]*\)@")
 
 
+# GCC's m68k switch: "jmp %pc@(TABLE,%dN:w)" followed by the table, 16-bit offsets
+# from TABLE to each case. The table is data in .text; objdump decodes it as
+# instructions, which may look like anything.
+JUMP_TABLE = re.compile(r"%pc@\(([0-9a-f]+)(?: <[^>]*>)?,%d[0-7]:w\)")
+
+
+def jump_tables(lines, code):
+    """Address ranges of the jump tables: from TABLE up to the nearest case, the
+    first address an entry points at (the table ends where its code begins)."""
+    ranges = []
+    for _, mnemonic, operands in lines:
+        m = JUMP_TABLE.search(operands) if mnemonic == "jmp" else None
+        if not m:
+            continue
+        start = end = int(m.group(1), 16)
+        limit = start + 0x10000
+        while end < limit and end in code and end + 1 in code:
+            offset = (code[end] << 8) | code[end + 1]
+            offset -= 0x10000 if offset & 0x8000 else 0
+            if offset > 0:
+                limit = min(limit, start + offset)
+            end += 2
+        ranges.append((start, end))
+    return ranges
+
+
 def instructions(objdump, path):
-    """(address, mnemonic, operands) of every instruction in every code section."""
+    """(address, function, mnemonic, operands) of every instruction in every code
+    section, jump tables left out."""
     out = subprocess.run([objdump, "-d", path], check=True, capture_output=True, text=True).stdout
     function = "?"
+    decoded, code = [], {}
     for line in out.splitlines():
         head = re.match(r"^[0-9a-f]+ <([^>]+)>:$", line)
         if head:
             function = head.group(1)
             continue
         fields = line.split("\t")
-        if len(fields) >= 3 and fields[0].strip().endswith(":"):
-            parts = fields[2].split(None, 1)
+        if len(fields) >= 2 and re.match(r"^\s*[0-9a-f]+:$", fields[0]):
+            address = int(fields[0].strip()[:-1], 16)
+            for i, word in enumerate(fields[1].split()):   # "303b 0806": 16-bit words
+                code[address + 2 * i] = int(word[:2], 16)
+                code[address + 2 * i + 1] = int(word[2:4], 16)
+            parts = fields[2].split(None, 1) if len(fields) >= 3 else []
             if parts:
-                yield (fields[0].strip()[:-1], function, parts[0],
-                       parts[1] if len(parts) > 1 else "")
+                decoded.append((address, function, parts[0], parts[1] if len(parts) > 1 else ""))
+    tables = jump_tables([(a, m, o) for a, _, m, o in decoded], code)
+    for address, function, mnemonic, operands in decoded:
+        if not any(start <= address < end for start, end in tables):
+            yield "%x" % address, function, mnemonic, operands
 
 
 def forbidden(objdump, path):

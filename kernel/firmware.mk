@@ -15,7 +15,8 @@ FW_MAX_PROCS := 32
 # net code works around it, and this keeps the class of bug out of every other part.
 FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched \
                 -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -ffunction-sections -fdata-sections \
-                -fno-tree-loop-distribute-patterns -fno-store-merging -MMD -MP
+                -fno-tree-loop-distribute-patterns -fno-store-merging -MMD -MP \
+                -nostdinc -isystem $(shell $(CROSS_CC) -print-file-name=include) -isystem $(NEWLIB)/include
 FW_ASFLAGS   := -mcpu=cpu32 -g -I$(ROOT)/kernel/arch/cpu32 -MMD -MP
 FW_LDSCRIPT  := kernel/arch/cpu32/robocube.ld
 FW_LDFLAGS   := -mcpu=cpu32 -nostdlib -T $(FW_LDSCRIPT) -Wl,--gc-sections -Wl,--build-id=none
@@ -47,7 +48,7 @@ CHECKS += firmware-boot
 .PHONY: firmware-tests check-firmware-boot
 firmware-tests: $(call app_elf,table1) $(FW_FAULT_ELFS)
 
-$(CPU32_RT):
+$(CPU32_RT) $(FW_LIBC_LIBS):
 	@$(SETUP) m68k
 
 $(FW_BUILD)/obj/%.c.o: %.c

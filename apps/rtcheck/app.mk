@@ -1,13 +1,14 @@
-# The compiler runtime checked on the board: int <-> float conversions, float and
-# double arithmetic, 64-bit division and shifts, dt() and (float)value(q) in a PDL
+# The compiler runtime and the C library checked on the board: int <-> float
+# conversions, float and double arithmetic, 64-bit division and shifts, printf's
+# conversions, string.h, stdlib.h, float libm, dt() and (float)value(q) in a PDL
 # process, each compared with the host's result (apps/rtcheck/tests/).
-rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c
+rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c
 
 RTCHECK_HOST := $(BUILD)/tests/rtcheck_host
-$(RTCHECK_HOST): apps/rtcheck/tests/host_main.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt_vectors.h
+$(RTCHECK_HOST): apps/rtcheck/tests/host_main.c $(wildcard apps/rtcheck/rt_*.[ch])
 	@mkdir -p $(@D)
 	$(HOST_CC) -std=c99 -O2 -Wall -Wextra -Werror -Iapps/rtcheck -o $@ apps/rtcheck/tests/host_main.c \
-	    apps/rtcheck/rt_vectors.c
+	    apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c -lm
 
 CHECKS += rtcheck
 .PHONY: check-rtcheck

@@ -5,6 +5,7 @@
  * uses both). apps/rtcheck/tests/ compares each line with the host's.
  *
  * Console: "RT NAME INDEX BITS" per vector (BITS: 16 hex digits), "RT done N",
+ * the C library's lines of rt_libc.c (through newlib's printf) and "RT libc N",
  * then "RT dt CYCLE BITS US" for the first PDL_CHECK_CYCLES cycles (dt()'s
  * bits and dt_us()), "RT value_float CYCLE BITS" ((float)value(q) of an
  * integer quantity that counts down from RT_VALUE_START), and "RT end".
@@ -14,6 +15,7 @@
 #include "kernel.h"
 #include "drivers/board.h"
 #include "pdl/pdl.h"
+#include "rt_libc.h"
 #include "rt_vectors.h"
 
 #define RT_PDL_HZ 100u
@@ -63,6 +65,7 @@ static void *rt_main(void *arg)
     (void)arg;
     n = rt_vectors_run(rtcheck_emit);
     k_printf("RT done %u\n", n);
+    k_printf("RT libc %d\n", rt_libc_run());
     r = add_quantity(&counter, RT_VALUE_START - 100, 0, RT_VALUE_START);
     if (r >= 0)
         r = add_process(rtcheck_observe);

@@ -2,6 +2,7 @@
 #include <inttypes.h>
 #include <stdio.h>
 
+#include "rt_libc.h"
 #include "rt_vectors.h"
 
 static void emit(const char *name, unsigned index, uint64_t bits)
@@ -13,5 +14,6 @@ static void emit(const char *name, unsigned index, uint64_t bits)
 int main(void)
 {
     printf("RT done %u\n", rt_vectors_run(emit));
+    printf("RT libc %d\n", rt_libc_run());
     return 0;
 }

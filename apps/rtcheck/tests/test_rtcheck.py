@@ -1,11 +1,12 @@
-"""The CPU32 compiler runtime on the emulated board, against the host.
+"""The CPU32 compiler runtime and C library on the emulated board, against the host.
 
 apps/rtcheck computes rt_vectors.c's vectors on the board (conversions between
 integers and float/double, signed and unsigned, 32 and 64 bits, with edge values;
 float and double arithmetic and comparisons, NaN included; 64-bit multiplication,
 shifts, division and modulo by small divisors and by divisors of 2^32 and more)
-and prints each result's bits; the host runs the same file natively. Then dt()
-and (float)value(q) from a running PDL process. Before the CPU32 runtime, the
+and prints each result's bits; the host runs the same file natively. Then
+rt_libc.c through newlib (printf's conversions, snprintf, string.h, stdlib.h,
+float libm), and dt() and (float)value(q) from a running PDL process. Before the CPU32 runtime, the
 first int-to-float conversion stopped the board with an illegal-instruction or
 line-F exception.
 
@@ -37,18 +38,18 @@ def board_lines():
     lines = []
     with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
         while not lines or lines[-1] != "RT end":
-            line = m.console.read_until(b"\n", timeout=30).decode("latin-1").strip()
+            line = m.console.read_until(b"\n", timeout=30).decode("latin-1").rstrip("\r\n")
             # A CPU exception report ends in "*** halted": fail at once, with the report.
             assert not line.startswith("*** EXCEPTION"), line
             lines.append(line)
-    return [line for line in lines if line.startswith("RT ")]
+    return [line for line in lines if line.startswith(("RT ", "RTP ", "RTM "))]
 
 
 @pytest.fixture(scope="module")
 def host_lines():
     assert HOST.is_file(), f"missing {HOST}"
     out = subprocess.run([str(HOST)], check=True, capture_output=True, text=True).stdout
-    return [line.strip() for line in out.splitlines()]
+    return [line.rstrip() for line in out.splitlines()]
 
 
 def f32(x):
@@ -60,16 +61,50 @@ def f32_bits(x):
     return struct.unpack(">I", struct.pack(">f", x))[0]
 
 
+def vector_lines(lines):
+    return [line for line in lines if line.startswith("RT ")
+            and not re.match(r"RT (dt|value_float|end|libc)\b", line)]
+
+
 def test_vectors_match_host(board_lines, host_lines):
-    vectors = [line for line in board_lines if not re.match(r"RT (dt|value_float|end)\b", line)]
-    assert host_lines[-1].startswith("RT done ") and int(host_lines[-1].split()[2]) > 100
-    assert len(vectors) == len(host_lines), (len(vectors), len(host_lines))
-    wrong = [(h, b) for h, b in zip(host_lines, vectors) if h != b]
-    assert not wrong, f"{len(wrong)} of {len(host_lines)} differ (host, board): {wrong[:10]}"
+    board, host = vector_lines(board_lines), vector_lines(host_lines)
+    assert host[-1].startswith("RT done ") and int(host[-1].split()[2]) > 100
+    assert len(board) == len(host), (len(board), len(host))
+    wrong = [(h, b) for h, b in zip(host, board) if h != b]
+    assert not wrong, f"{len(wrong)} of {len(host)} differ (host, board): {wrong[:10]}"
+
+
+def test_printf_string_and_stdlib_match_host(board_lines, host_lines):
+    """newlib's printf (%d %u %ld %lld %x %o %s %c %f %e %g, widths, flags),
+    snprintf, string.h, strtol/atoi/abs/qsort: the same text as the host's C library."""
+    board = [line for line in board_lines if line.startswith("RTP ")]
+    host = [line for line in host_lines if line.startswith("RTP ")]
+    assert len(host) > 30 and len(board) == len(host), (len(board), len(host))
+    wrong = [(h, b) for h, b in zip(host, board) if h != b]
+    assert not wrong, f"{len(wrong)} of {len(host)} differ (host, board): {wrong[:6]}"
+    kinds = {line.split()[1] for line in host}
+    assert {"d", "u", "ld", "lld", "f", "s", "snprintf", "string", "stdlib", "qsort", "puts"} <= kinds
+    count = [line for line in board_lines if line.startswith("RT libc ")]
+    assert count and int(count[0].split()[2]) == len(host) + len(
+        [line for line in host_lines if line.startswith("RTM ")])
+
+
+def test_float_libm_within_two_ulp_of_host(board_lines, host_lines):
+    """sinf, cosf, atan2f, sqrtf, fabsf: neither C library rounds all of them
+    correctly, so each result may differ from the host's by 2 units in the last place;
+    sqrtf and fabsf are exact in IEEE 754 and must be equal."""
+    board = [line.split() for line in board_lines if line.startswith("RTM ")]
+    host = [line.split() for line in host_lines if line.startswith("RTM ")]
+    assert len(host) == 35 and len(board) == len(host)
+    for (_, name, index, hbits), (_, bname, bindex, bbits) in zip(host, board):
+        assert (name, index) == (bname, bindex)
+        h, b = int(hbits, 16), int(bbits, 16)
+        allowed = 0 if name in ("sqrtf", "fabsf") else 2
+        assert (h >> 31) == (b >> 31) and abs(h - b) <= allowed, (name, index, hbits, bbits)
 
 
 def test_vectors_cover_what_the_issue_names(host_lines):
-    names = {line.split()[1] for line in host_lines[:-1]}
+    names = {line.split()[1] for line in vector_lines(host_lines)[:-1]}
     for needed in ("i32_to_float", "u32_to_float", "float_to_i32", "float_to_u32",
                    "i64_div", "i64_mod", "u64_div", "u64_mod", "double_to_i32"):
         assert needed in names
