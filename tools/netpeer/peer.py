@@ -188,6 +188,8 @@ class Peer:
 
     def recv(self, port, timeout=None):
         """(src, message) from port, or None after timeout seconds."""
+        if not 0 <= port < PORTS:
+            raise ValueError(f"port {port}: 0..{PORTS - 1}")
         try:
             return self.ports[port].get(timeout=timeout)
         except queue.Empty:
