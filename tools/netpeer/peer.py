@@ -10,6 +10,8 @@ from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, SESS
 
 RTO, RTO_MAX, MAX_RETRIES = 0.25, 1.0, 8
 MAX_STATIONS = 16
+# Listen before talk (net/mac.h): slot, contention window, attempts.
+SLOT, CW_MIN, CW_MAX, MAC_ATTEMPTS = 0.003, 4, 64, 12
 
 # The last session each station number used in this process: a Peer started
 # again for the same station takes the next one, so two successive Peers
@@ -87,11 +89,11 @@ class Peer:
             # Listen before talk, as net/mac.c (initial wait for data frames,
             # except a fragment right after its predecessor's ACK: link_is_burst).
             if not is_ack and not burst:
-                self.t.clock.sleep(self.rng.randrange(0, 5) * 0.003)
-            for attempt in range(12):
+                self.t.clock.sleep(self.rng.randrange(0, CW_MIN + 1) * SLOT)
+            for attempt in range(MAC_ATTEMPTS):
                 if not self.t.carrier:
                     break
-                self.t.clock.sleep((1 + self.rng.randrange(4 << min(attempt, 4))) * 0.003)
+                self.t.clock.sleep((1 + self.rng.randrange(min(CW_MIN << attempt, CW_MAX))) * SLOT)
             self.t.transmit(data)
             self.stats["frames_sent"] += 1
 
