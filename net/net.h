@@ -25,13 +25,29 @@
 
 /* Results (besides K_E* codes of the kernel, e.g. K_ETIMEDOUT, K_EINVAL). */
 #define NET_EUNREACH LINK_EUNREACH       /* reliable send: no ACK after all retries */
+#define NET_ENOBUFS  LINK_ENOBUFS        /* datagram: the transmit queue is full */
+
+/* What the queues did when full or superseded (net/README.md, "Queues"). */
+struct net_queue_stats {
+    uint32_t acks_replaced;     /* a newer ACK to the same station took the queued one's place */
+    uint32_t acks_dropped;      /* ACK queue full (one entry per station: never) */
+    uint32_t data_replaced;     /* the link's next DATA frame took a waiting one's place */
+    uint32_t data_obsolete;     /* a waiting retransmission whose fragment was since acknowledged */
+    uint32_t dgrams_refused;    /* datagram queue full: net_send returned NET_ENOBUFS */
+};
 
 struct net_stats {
     uint32_t frames_sent, frames_received;
     uint32_t crc_errors, malformed;
     uint32_t retransmissions, collisions, deferrals, mac_drops;
-    uint32_t duplicates, delivered, unreachable, port_overflows;
-    uint32_t rx_overruns;
+    uint32_t duplicates, delivered, unreachable;
+    uint32_t port_refused;       /* reliable messages not acknowledged: their port was full */
+    uint32_t port_overflows;     /* datagrams dropped: their port was full */
+    uint32_t rx_overruns;        /* characters lost in the DUART */
+    uint32_t rx_ring_full;       /* good frames dropped: the radio's receive ring was full */
+    uint32_t stale_acks;         /* ACKs for no outstanding frame, ignored */
+    uint32_t new_sessions;       /* peers seen restarting (a new session) */
+    struct net_queue_stats txq;
     uint32_t fec_corrected, fec_failed;  /* NET_FEC: bytes corrected; frames beyond the code */
 };
 
@@ -40,7 +56,10 @@ struct net_stats {
 #define NET_FEC 0x1u
 
 /* Starts the stack as station `station` (0..LINK_MAX_STATIONS-1); seed makes
- * the backoffs of different stations differ. Call once after k_init. */
+ * the backoffs of different stations differ, and seed % LINK_SESSIONS is the
+ * link's session (link.h), so it must differ from the station's previous
+ * boot's (netnode: the host's boot counter; the shell: the tick count when
+ * the user started the network). Call once after k_init. */
 int net_init(uint8_t station, uint32_t seed);
 /* The same with options: NET_FEC. */
 int net_init_flags(uint8_t station, uint32_t seed, unsigned flags);
@@ -49,7 +68,7 @@ uint8_t net_station(void);
  * NET_RELIABLE (unicast only) it returns when dst acknowledged the whole
  * message (K_OK) or NET_EUNREACH when it never did (about 8 s of retries);
  * without, the datagram (at most PACKET_DATA_MAX bytes) is queued and it
- * returns at once. Never blocks longer than 60 s (then K_ETIMEDOUT). */
+ * returns at once (NET_ENOBUFS when NET_DGRAM_QUEUE datagrams wait already). Never blocks longer than 60 s (then K_ETIMEDOUT). */
 int net_send(uint8_t dst, uint8_t port, const void *data, size_t len, unsigned flags);
 /* Waits up to timeout_ms for a message on port; copies at most size bytes,
  * returns the message length (>= 0, truncated to size), *src = its sender

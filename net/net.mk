@@ -4,8 +4,10 @@
 #   make check-net-target   boards on the medium: 2 and 3 stations, the host
 #                           peer both ways, a faulty medium, a station that leaves,
 #                           the medium's faults and the board model's radio mode
-#   make net-soak BOARDS=N MESSAGES=M LOSS=P CORRUPT=Q BYTE_ERRORS=R SEED=S FEC=0|1
-#   make check-net-soak     two short soaks (frame faults; byte errors with FEC)
+#   make net-soak BOARDS=N HOSTS=H MESSAGES=M LOSS=P CORRUPT=Q BYTE_ERRORS=R SEED=S FEC=0|1
+#   make check-net-soak     three short soaks (frame faults; byte errors with FEC;
+#                           8 host peers and a board sending at once)
+#   make net-soak-fan-in    the last one long: FAN_IN_MESSAGES (20) per pair
 #   make net-interop        the host-peer-first tests INTEROP_RUNS (10) times
 #   make net-bench          goodput and latency figures (net/README.md)
 NET_BUILD      := $(BUILD)/net
@@ -20,7 +22,8 @@ net_test_srcs_mac   := net/mac.c
 net_test_srcs_fec   := net/fec.c net/rs.c net/crc16.c
 net_test_libs_xdr   := -I/usr/include/tirpc -ltirpc
 
-ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample $(NET_BUILD)/tests/fec_sample
+ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample $(NET_BUILD)/tests/fec_sample \
+       $(NET_BUILD)/tests/wire_constants
 CHECKS += net-unit net-target net-soak
 HOST_UNIT_CHECKS += net-unit
 
@@ -47,10 +50,15 @@ $(NET_BUILD)/tests/fec_sample: net/tests/fec_sample.c net/fec.c net/fec.h net/rs
 	@mkdir -p $(@D)
 	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/fec_sample.c net/fec.c net/rs.c net/crc16.c
 
+# The wire constants the host peer's copies are checked against (test_wire_constants.py).
+$(NET_BUILD)/tests/wire_constants: net/tests/wire_constants.c $(wildcard net/*.h)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/wire_constants.c
+
 check-net-target:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample \
-	    $(NET_BUILD)/tests/fec_sample
+	    $(NET_BUILD)/tests/fec_sample $(NET_BUILD)/tests/wire_constants
 	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
 	    $(ROOT)/net/tests/target
 
@@ -69,6 +77,7 @@ net-interop:
 	done; echo "net-interop: $$p of $(INTEROP_RUNS) runs passed"; [ $$f -eq 0 ]
 
 BOARDS   ?= 2
+HOSTS    ?= 1
 MESSAGES ?= 5
 LOSS     ?= 0.1
 CORRUPT  ?= 0.1
@@ -78,20 +87,23 @@ FEC      ?= 0
 net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
-	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards $(BOARDS) \
+	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards $(BOARDS) --hosts $(HOSTS) \
 	    --messages $(MESSAGES) --loss $(LOSS) --corrupt $(CORRUPT) --byte-errors $(BYTE_ERRORS) \
 	    --seed $(SEED) $(if $(filter 1 on yes,$(FEC)),--fec)
 
 # The short soaks of make check: (1) 2 boards and the host peer, 10 % frame
 # loss, 10 % corrupted frames, 3 messages per pair (18 messages); (2) the
 # issue's goal with FEC: 3 boards and the host peer, 10 % byte errors per
-# character, 10 % frame loss, all sending at once, 3 messages per pair (36).
+# character, 10 % frame loss, all sending at once, 3 messages per pair (36);
+# (3) fan-in: 8 host peers and the board all sending to each other at once,
+# 3 messages per pair (48; the long one is make net-soak-fan-in).
 # Not niced: beside the proof lane's two busy cores a niced soak got a few
 # per cent of a core (20-50 lock-step rounds a second, 5-6 minutes for the
 # first soak alone). Every timer runs in the boards' time, so a slow host
 # costs only wall time; --timeout is the guard against a hang.
 NET_SOAK_CHECKS := "--boards 2 --messages 3 --loss 0.1 --corrupt 0.1 --seed 1" \
-                   "--boards 3 --messages 3 --loss 0.1 --byte-errors 0.1 --fec --seed 1"
+                   "--boards 3 --messages 3 --loss 0.1 --byte-errors 0.1 --fec --seed 1" \
+                   "--boards 1 --hosts 8 --messages 3 --seed 1"
 check-net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
@@ -100,6 +112,16 @@ check-net-soak:
 	        --timeout 600); rc=$$?; echo "$$out" | tail -2; \
 	    if [ $$rc -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
 	done; $(call record,net-soak,$$p,$$f); [ $$f -eq 0 ]
+
+# Eight stations (host peers) and one board all sending to each other at
+# once: FAN_IN_MESSAGES per pair, everything delivered in order or it fails.
+FAN_IN_MESSAGES ?= 20
+.PHONY: net-soak-fan-in
+net-soak-fan-in:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=netnode
+	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards 1 --hosts 8 \
+	    --messages $(FAN_IN_MESSAGES) --seed $(SEED) --timeout 1800
 
 net-bench:
 	@$(SETUP) base m68k qemu

@@ -38,13 +38,14 @@ struct netnode_config {
     uint32_t seed;
     uint32_t linger_ms;      /* SOAK: keep receiving this long after sending */
     uint8_t flags;           /* NETNODE_FEC: forward error correction on air */
-    uint8_t reserved[3];
+    uint8_t reserved;
+    uint16_t boot;           /* the host's count of this station's launches */
 };
 #define NETNODE_FEC 0x1u
 
 /* Patched by the host: keep the layout in step with tools/netpeer/netnode.py. */
 volatile const struct netnode_config netnode_config __attribute__((used, aligned(4))) = {
-    { 'N', 'E', 'T', 'N', 'O', 'D', 'E', '\0' }, 1, MODE_ECHO, 0x0003, 10, 32, 1, 3000, 0, { 0, 0, 0 }
+    { 'N', 'E', 'T', 'N', 'O', 'D', 'E', '\0' }, 1, MODE_ECHO, 0x0003, 10, 32, 1, 3000, 0, 0, 0
 };
 
 static struct netnode_config cfg;
@@ -201,13 +202,18 @@ static void *main_fn(void *arg)
 {
     int rc;
     (void)arg;
-    rc = net_init_flags(cfg.station, cfg.seed, (cfg.flags & NETNODE_FEC) != 0u ? NET_FEC : 0u);
+    /* Nothing on the board differs between two boots in the deterministic
+     * emulator (no clock, no non-volatile memory), so the host counts them:
+     * seed + boot differs per boot, and with it the link's session (net.h). */
+    rc = net_init_flags(cfg.station, cfg.seed + cfg.boot,
+                        (cfg.flags & NETNODE_FEC) != 0u ? NET_FEC : 0u);
     if (rc != K_OK) {
         k_printf("netnode: net_init failed (%d)\n", rc);
         return NULL;
     }
-    k_printf("netnode: station %u up, mode %u%s\n", (unsigned)cfg.station, (unsigned)cfg.mode,
-             (cfg.flags & NETNODE_FEC) != 0u ? ", fec" : "");
+    k_printf("netnode: station %u up, mode %u%s, boot %u\n", (unsigned)cfg.station,
+             (unsigned)cfg.mode, (cfg.flags & NETNODE_FEC) != 0u ? ", fec" : "",
+             (unsigned)cfg.boot);
     (void)k_thread_create(&echo_thread, "echo", echo_main, NULL, echo_stack,
                           sizeof echo_stack, 10);
     (void)k_thread_create(&soak_rx_thread, "soakrx", soak_rx_main, NULL, soak_rx_stack,

@@ -27,12 +27,18 @@ static struct station st[STATIONS];
 static unsigned loss_every;       /* drop every n-th frame on the air (0: none) */
 static unsigned air_count;
 static int down[STATIONS];        /* station switched off */
+static unsigned refuse;           /* the transmit queue refuses the next n frames */
 
-static void tx(void *ctx, const struct frame *f)
+static int tx(void *ctx, const struct frame *f)
 {
     struct station *s = ctx;
+    if (refuse > 0u) {
+        refuse--;
+        return -1;
+    }
     assert_true(s->nq < QMAX);
     s->q[s->nq++] = *f;
+    return 0;
 }
 
 static void deliver(void *ctx, uint8_t src, uint8_t port, const uint8_t *msg, size_t len)
@@ -62,9 +68,10 @@ static int setup(void **state)
     memset(down, 0, sizeof down);
     loss_every = 0;
     air_count = 0;
+    refuse = 0;
     for (i = 0; i < STATIONS; i++) {
         struct link_env env = { tx, deliver, done, NULL, &st[i] };
-        link_init(&st[i].link, (uint8_t)i, &env, i + 1u);
+        link_init(&st[i].link, (uint8_t)i, &env, i + 1u, (uint8_t)(10u + i));
     }
     return 0;
 }
@@ -79,7 +86,7 @@ static void run(uint32_t *now, uint32_t ms)
             for (k = 0; k < st[i].nq; k++) {
                 struct frame f = st[i].q[k];
                 air_count++;
-                link_frame_done(&st[i].link, f.type, *now);
+                link_frame_done(&st[i].link, &f, *now);
                 if (down[i] || (loss_every && air_count % loss_every == 0u))
                     continue;
                 for (j = 0; j < STATIONS; j++)
@@ -220,23 +227,113 @@ static void test_fragments_after_an_ack_are_a_burst(void **state)
     data = st[0].q[0];
     st[0].nq = 0;
     assert_false(link_is_burst(&st[0].link, &data));            /* first fragment */
-    link_frame_done(&st[0].link, LINK_DATA, now);
+    link_frame_done(&st[0].link, &data, now);
     link_receive(&st[1].link, &data, now);
     assert_int_equal(st[1].nq, 1);
     ack = st[1].q[0];
     st[1].nq = 0;
-    assert_int_equal(ack.type, LINK_ACK);
+    assert_int_equal(LINK_KIND(ack.type), LINK_ACK);
     assert_false(link_is_burst(&st[1].link, &ack));
     link_receive(&st[0].link, &ack, now + 20u);
     assert_int_equal(st[0].nq, 1);
     data = st[0].q[0];
     st[0].nq = 0;
     assert_true(link_is_burst(&st[0].link, &data));             /* second, after the ACK */
-    link_frame_done(&st[0].link, LINK_DATA, now + 20u);
+    link_frame_done(&st[0].link, &data, now + 20u);
     (void)link_poll(&st[0].link, now + 20u + 2u * LINK_RTO_MS);  /* no ACK: retransmitted */
     assert_int_equal(st[0].nq, 1);
     assert_int_equal(st[0].q[0].seq, data.seq);
     assert_false(link_is_burst(&st[0].link, &st[0].q[0]));
+}
+
+/* Sequence numbers restart at 0 with a station; its new session tells the
+ * receiver, which still holds the old boot's last number, to start afresh
+ * instead of dropping the first message as a repeat. */
+static void test_restarted_sender_is_not_taken_for_a_repeat(void **state)
+{
+    uint8_t msg[3] = { 1, 2, 3 };
+    uint32_t now = 0;
+    struct link_env env = { tx, deliver, done, NULL, &st[0] };
+    (void)state;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 3, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 100);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 1);
+    link_init(&st[0].link, 0, &env, 77u, 11u);          /* station 0 reboots, session 11 */
+    st[0].done = 0;
+    msg[0] = 9;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 3, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 100);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 2);                   /* delivered, not a duplicate */
+    assert_int_equal(st[1].got[1][0], 9);
+    assert_int_equal(st[1].link.stats.duplicates, 0);
+    assert_int_equal(st[1].link.stats.new_sessions, 1);
+    /* Its retransmissions in the new session are still repeats. */
+    loss_every = 3;
+    st[0].done = 0;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 3, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 20000);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 3);
+}
+
+/* Only the ACK of the outstanding frame counts: same station, seq and session. */
+static void test_only_the_outstanding_frames_ack_counts(void **state)
+{
+    uint8_t msg[2] = { 5, 6 };
+    struct frame ack = { 0 };
+    uint32_t now = 0;
+    (void)state;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 2, LINK_RELIABLE, now), LINK_OK);
+    link_frame_done(&st[0].link, &st[0].q[0], now);
+    st[0].nq = 0;
+    ack.src = 1;
+    ack.dst = 0;
+    ack.seq = 0;
+    ack.type = LINK_TYPE(LINK_ACK, 11u);               /* a previous boot's session */
+    link_receive(&st[0].link, &ack, now + 1u);
+    ack.src = 2;                                       /* the wrong station */
+    ack.type = LINK_TYPE(LINK_ACK, 10u);
+    link_receive(&st[0].link, &ack, now + 1u);
+    ack.src = 1;
+    ack.seq = 1;                                       /* the wrong seq */
+    link_receive(&st[0].link, &ack, now + 1u);
+    assert_false(st[0].done);
+    assert_int_equal(st[0].link.stats.stale_acks, 3);
+    ack.seq = 0;
+    link_receive(&st[0].link, &ack, now + 2u);
+    assert_true(st[0].done);
+    assert_int_equal(st[0].result, LINK_OK);
+}
+
+/* A DATA frame the transmit queue refuses is not lost for ever: its timer
+ * runs as for a frame lost on air, and the retransmission gets through. */
+static void test_refused_data_frame_is_retransmitted(void **state)
+{
+    uint8_t msg[200];
+    uint32_t now = 0;
+    (void)state;
+    memset(msg, 3, sizeof msg);
+    refuse = 1;                                        /* the first fragment */
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, sizeof msg, LINK_RELIABLE, now), LINK_OK);
+    assert_int_equal(st[0].nq, 0);
+    run(&now, 2u * LINK_RTO_MS);
+    assert_true(st[0].link.stats.retransmissions >= 1u);
+    run(&now, 20000);
+    assert_true(st[0].done);
+    assert_int_equal(st[0].result, LINK_OK);
+    assert_int_equal(st[1].ngot, 1);
+    /* Refused every time: unreachable after the retries, not a hang. */
+    st[0].done = 0;
+    refuse = 1000;
+    assert_int_equal(link_send(&st[0].link, 1, 0, msg, 4, LINK_RELIABLE, now), LINK_OK);
+    run(&now, 30000);
+    assert_true(st[0].done);
+    assert_int_equal(st[0].result, LINK_EUNREACH);
+    /* A refused datagram is the caller's error, not a silent loss. */
+    refuse = 1;
+    assert_int_equal(link_send(&st[0].link, 2, 0, msg, 4, 0, now), LINK_ENOBUFS);
 }
 
 int main(void)
@@ -249,6 +346,9 @@ int main(void)
         cmocka_unit_test_setup(test_bad_arguments, setup),
         cmocka_unit_test_setup(test_packet_reassembly_errors, setup),
         cmocka_unit_test_setup(test_fragments_after_an_ack_are_a_burst, setup),
+        cmocka_unit_test_setup(test_restarted_sender_is_not_taken_for_a_repeat, setup),
+        cmocka_unit_test_setup(test_only_the_outstanding_frames_ack_counts, setup),
+        cmocka_unit_test_setup(test_refused_data_frame_is_retransmitted, setup),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -3,29 +3,86 @@ import argparse
 import sys
 
 from . import MediumTransport, Peer, SerialTransport, Unreachable
+from .peer import MAX_STATIONS
+from .protocol import BROADCAST, MSG_MAX, PACKET_DATA_MAX, PORTS
+
+USAGE = ("netpeer (--socket PATH | --serial DEVICE) --station 0-15 [--baud N] [--fec] "
+         "{send DST PORT TEXT [--datagram] [--wait-reply SECONDS] | "
+         "listen PORT [--count N] [--timeout SECONDS]}")
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(prog="netpeer", description=__doc__)
+class Parser(argparse.ArgumentParser):
+    """Every bad argument: one line (what is wrong, then the usage) and exit 2."""
+
+    def error(self, message):
+        self.exit(2, f"netpeer: {message}; usage: {USAGE}\n")
+
+
+def ranged(name, lo, hi, extra=()):
+    """An argparse type: an integer lo..hi (or one of extra)."""
+    def parse(text):
+        try:
+            v = int(text, 10)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+        if not (lo <= v <= hi or v in extra):
+            also = "".join(f" or {e}" for e in extra)
+            raise argparse.ArgumentTypeError(f"{v} is not a {name} ({lo}..{hi}{also})")
+        return v
+    return parse
+
+
+def positive_seconds():
+    """An argparse type: a finite number of seconds > 0."""
+    def parse(text):
+        try:
+            v = float(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+        if not 0 < v < float("inf"):
+            raise argparse.ArgumentTypeError(f"{text} is not a positive number of seconds")
+        return v
+    return parse
+
+
+def parse_args(argv):
+    ap = Parser(prog="netpeer", description=__doc__, usage=USAGE)
     where = ap.add_mutually_exclusive_group(required=True)
     where.add_argument("--socket", help="the radio medium's Unix socket (emu/radio_medium.py)")
     where.add_argument("--serial", help="a serial port with a real radio module")
-    ap.add_argument("--station", type=int, required=True)
-    ap.add_argument("--baud", type=int, default=19200)
+    ap.add_argument("--station", type=ranged("station", 0, MAX_STATIONS - 1), required=True)
+    ap.add_argument("--baud", type=ranged("baud", 300, 255 * 300), default=19200)
     ap.add_argument("--fec", action="store_true", help="Reed-Solomon frames (boards with NET_FEC)")
-    sub = ap.add_subparsers(dest="cmd", required=True)
-    s = sub.add_parser("send")
-    s.add_argument("dst", type=int)
-    s.add_argument("port", type=int)
+    sub = ap.add_subparsers(dest="cmd", required=True, parser_class=Parser)
+    s = sub.add_parser("send", usage=USAGE)
+    s.add_argument("dst", type=ranged("destination", 0, MAX_STATIONS - 1, (BROADCAST,)))
+    s.add_argument("port", type=ranged("port", 0, PORTS - 1))
     s.add_argument("text")
     s.add_argument("--datagram", action="store_true")
-    s.add_argument("--wait-reply", type=float, metavar="SECONDS",
+    s.add_argument("--wait-reply", type=positive_seconds(), metavar="SECONDS",
                    help="then print one message from the same port")
-    l = sub.add_parser("listen")
-    l.add_argument("port", type=int)
-    l.add_argument("--count", type=int, default=0, help="stop after this many (0: forever)")
-    l.add_argument("--timeout", type=float, default=None)
+    lp = sub.add_parser("listen", usage=USAGE)
+    lp.add_argument("port", type=ranged("port", 0, PORTS - 1))
+    lp.add_argument("--count", type=ranged("count", 0, 1_000_000), default=0,
+                    help="stop after this many (0: forever)")
+    lp.add_argument("--timeout", type=positive_seconds(), default=None)
     a = ap.parse_args(argv)
+    if a.socket is not None and a.baud % 300:
+        ap.error(f"baud {a.baud} is not a multiple of 300 (the medium's unit)")
+    if a.cmd == "send":
+        size = len(a.text.encode())
+        single = a.datagram or a.dst == BROADCAST
+        if a.dst == a.station:
+            ap.error(f"destination {a.dst} is this station")
+        if size > (PACKET_DATA_MAX if single else MSG_MAX):
+            ap.error(f"text of {size} bytes is longer than a "
+                     f"{'datagram' if single else 'message'} "
+                     f"({PACKET_DATA_MAX if single else MSG_MAX} bytes)")
+    return a
+
+
+def main(argv=None):
+    a = parse_args(argv)
     try:
         t = MediumTransport(a.socket, a.baud) if a.socket else SerialTransport(a.serial, a.baud)
     except (OSError, ValueError) as e:            # pyserial's SerialException is an OSError

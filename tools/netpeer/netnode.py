@@ -9,7 +9,7 @@ import time
 MAGIC = b"NETNODE\0"
 MODES = {"soak": 1, "echo": 2, "bench": 3}
 # struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
-CONFIG = struct.Struct(">BBHHHIIB3x")
+CONFIG = struct.Struct(">BBHHHIIBxH")
 FLAG_FEC = 0x1
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -21,7 +21,9 @@ SYNC_NS = 500_000
 
 
 def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
-                 seed=1, linger_ms=3000, fec=False):
+                 seed=1, linger_ms=3000, fec=False, boot=0):
+    """boot: this launch's number for the station (0 first): the board's link
+    session derives from seed + boot, so a restarted board must get another."""
     data = bytearray(open(elf_in, "rb").read())
     at = data.find(MAGIC)
     if at < 0 or data.find(MAGIC, at + 1) >= 0:
@@ -30,7 +32,7 @@ def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, s
     for p in peers:
         mask |= 1 << p
     cfg = CONFIG.pack(station, MODES[mode], mask, messages, size, seed, linger_ms,
-                      FLAG_FEC if fec else 0)
+                      FLAG_FEC if fec else 0, boot)
     data[at + len(MAGIC):at + len(MAGIC) + CONFIG.size] = cfg
     with open(elf_out, "wb") as f:
         f.write(data)
@@ -49,7 +51,7 @@ class Board:
     def __init__(self, elf, station, medium_sock, workdir, icount=ICOUNT, sync_ns=SYNC_NS,
                  **config):
         self.station = station
-        self.elf = os.path.join(workdir, f"netnode-{station}.elf")
+        self.elf = os.path.join(workdir, f"netnode-{station}-{config.get('boot', 0)}.elf")
         patch_config(elf, self.elf, station, **config)
         self.console = bytearray()
         self.lock = threading.Lock()

@@ -1,13 +1,33 @@
 """The link protocol of net/link.h on the host: reliable channel, datagrams, broadcast."""
+import os
 import queue
 import random
 import threading
 
-from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, FecDecoder, Frame,
-                       FrameDecoder, Reassembly, encode_frame, encode_frame_fec, fragments)
+from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, SESSIONS, FecDecoder,
+                       Frame, FrameDecoder, Reassembly, encode_frame, encode_frame_fec,
+                       frame_kind, frame_session, frame_type, fragments)
 
 RTO, RTO_MAX, MAX_RETRIES = 0.25, 1.0, 8
 MAX_STATIONS = 16
+# Listen before talk (net/mac.h): slot, contention window, attempts.
+SLOT, CW_MIN, CW_MAX, MAC_ATTEMPTS = 0.003, 4, 64, 12
+
+# The last session each station number used in this process: a Peer started
+# again for the same station takes the next one, so two successive Peers
+# never share one (net/link.h, "Sessions"); the first is random, as a new
+# host process is a new boot.
+_last_session = {}
+_session_lock = threading.Lock()
+
+
+def _next_session(station):
+    with _session_lock:
+        last = _last_session.get(station)
+        s = int.from_bytes(os.urandom(1), "big") % SESSIONS if last is None \
+            else (last + 1) % SESSIONS
+        _last_session[station] = s
+        return s
 
 
 class Unreachable(Exception):
@@ -15,24 +35,37 @@ class Unreachable(Exception):
 
 
 class Peer:
-    def __init__(self, transport, station, seed=None, fec=False):
-        """fec: Reed-Solomon frames (net/fec.h), as boards started with NET_FEC."""
+    def __init__(self, transport, station, seed=None, fec=False, session=None):
+        """fec: Reed-Solomon frames (net/fec.h), as boards started with NET_FEC.
+        session: this peer's session number (0..SESSIONS-1); by default one
+        that differs from the last Peer of this station in this process."""
         if not 0 <= station < MAX_STATIONS:
             raise ValueError(f"station {station}: 0..{MAX_STATIONS - 1}")
+        if session is not None and not 0 <= session < SESSIONS:
+            raise ValueError(f"session {session}: 0..{SESSIONS - 1}")
         self.t = transport
         self.station = station
+        self.session = _next_session(station) if session is None else session
+        with _session_lock:
+            _last_session[station] = self.session
         self.rng = random.Random(seed if seed is not None else station)
         self.decoder = FecDecoder() if fec else FrameDecoder()
         self.encode = encode_frame_fec if fec else encode_frame
         self.tx_seq = [0] * MAX_STATIONS
         self.rx_last = [None] * MAX_STATIONS
+        self.rx_session = [None] * MAX_STATIONS
         self.reasm = [Reassembly() for _ in range(MAX_STATIONS)]
         self.ports = [queue.Queue() for _ in range(PORTS)]
-        self.acks = queue.Queue()
+        # The one ACK a reliable send waits for: (station, seq), our session;
+        # any other ACK is stale and dropped when it arrives (net/link.c).
+        self.ack_lock = threading.Lock()
+        self.awaiting = None
+        self.acked = False
         self.tx_lock = threading.Lock()     # one transmission at a time
         self.send_lock = threading.Lock()   # one reliable send at a time
         self.stats = dict(frames_sent=0, frames_received=0, retransmissions=0,
-                          duplicates=0, delivered=0, unreachable=0)
+                          duplicates=0, delivered=0, unreachable=0, stale_acks=0,
+                          new_sessions=0)
         self.running = True
         self.t.hello(station)
         self.reader = threading.Thread(target=self._read_loop, daemon=True)
@@ -56,11 +89,11 @@ class Peer:
             # Listen before talk, as net/mac.c (initial wait for data frames,
             # except a fragment right after its predecessor's ACK: link_is_burst).
             if not is_ack and not burst:
-                self.t.clock.sleep(self.rng.randrange(0, 5) * 0.003)
-            for attempt in range(12):
+                self.t.clock.sleep(self.rng.randrange(0, CW_MIN + 1) * SLOT)
+            for attempt in range(MAC_ATTEMPTS):
                 if not self.t.carrier:
                     break
-                self.t.clock.sleep((1 + self.rng.randrange(4 << min(attempt, 4))) * 0.003)
+                self.t.clock.sleep((1 + self.rng.randrange(min(CW_MIN << attempt, CW_MAX))) * SLOT)
             self.t.transmit(data)
             self.stats["frames_sent"] += 1
 
@@ -76,19 +109,31 @@ class Peer:
         if f.dst not in (self.station, BROADCAST) or f.src >= MAX_STATIONS or f.src == self.station:
             return
         self.stats["frames_received"] += 1
-        if f.type == ACK and f.dst == self.station:
-            self.acks.put((f.src, f.seq))
+        kind, session = frame_kind(f.type), frame_session(f.type)
+        if kind == ACK and f.dst == self.station:
+            with self.ack_lock:
+                if self.awaiting == (f.src, f.seq) and session == self.session:
+                    self.acked = True
+                else:
+                    self.stats["stale_acks"] += 1
             self.t.clock.notify()
-        elif f.type == DATA and f.dst == self.station:
+        elif kind == DATA and f.dst == self.station:
+            if self.rx_last[f.src] is not None and self.rx_session[f.src] != session:
+                # The sender restarted: its numbers begin again (net/link.h, "Sessions").
+                self.rx_last[f.src] = None
+                self.reasm[f.src] = Reassembly()
+                self.stats["new_sessions"] += 1
             threading.Thread(target=self._transmit,
-                             args=(Frame(self.station, f.src, ACK, f.seq), True),
+                             args=(Frame(self.station, f.src, frame_type(ACK, session), f.seq),
+                                   True),
                              daemon=True).start()
             if self.rx_last[f.src] == f.seq:
                 self.stats["duplicates"] += 1
                 return
             self.rx_last[f.src] = f.seq
+            self.rx_session[f.src] = session
             self._deliver(f.src, f.payload, self.reasm[f.src])
-        elif f.type == DGRAM:
+        elif kind == DGRAM:
             self._deliver(f.src, f.payload, Reassembly())
 
     def _deliver(self, src, payload, reasm):
@@ -109,7 +154,8 @@ class Peer:
         if not reliable or dst == BROADCAST:
             if len(data) > PACKET_DATA_MAX:
                 raise ValueError(f"datagram of {len(data)} bytes > {PACKET_DATA_MAX}")
-            self._transmit(Frame(self.station, dst, DGRAM, 0, fragments(data, port)[0]))
+            self._transmit(Frame(self.station, dst, frame_type(DGRAM, self.session), 0,
+                                 fragments(data, port)[0]))
             return
         if not 0 <= dst < MAX_STATIONS or dst == self.station:
             raise ValueError(f"destination {dst}")
@@ -120,26 +166,32 @@ class Peer:
     def _send_fragment(self, dst, payload, burst=False):
         seq = self.tx_seq[dst]
         rto = RTO
-        for attempt in range(MAX_RETRIES + 1):
-            if attempt:
-                self.stats["retransmissions"] += 1
-            self._transmit(Frame(self.station, dst, DATA, seq, payload),
-                           burst=burst and attempt == 0)
-            # The timeout counts in the boards' time when they keep one
-            # (transport.PeerClock): a slow host must not make us give up.
-            deadline = self.t.clock.now() + rto * (1 + self.rng.random() / 4)
-            while self.t.clock.wait_until(deadline, lambda: not self.acks.empty()):
-                src, aseq = self.acks.get_nowait()
-                if src == dst and aseq == seq:
+        with self.ack_lock:
+            self.awaiting, self.acked = (dst, seq), False
+        try:
+            for attempt in range(MAX_RETRIES + 1):
+                if attempt:
+                    self.stats["retransmissions"] += 1
+                self._transmit(Frame(self.station, dst, frame_type(DATA, self.session), seq,
+                                     payload), burst=burst and attempt == 0)
+                # The timeout counts in the boards' time when they keep one
+                # (transport.PeerClock): a slow host must not make us give up.
+                deadline = self.t.clock.now() + rto * (1 + self.rng.random() / 4)
+                if self.t.clock.wait_until(deadline, lambda: self.acked):
                     self.tx_seq[dst] = (seq + 1) & 0xFF
                     return
-            rto = min(rto * 2, RTO_MAX)
+                rto = min(rto * 2, RTO_MAX)
+        finally:
+            with self.ack_lock:
+                self.awaiting = None
         self.tx_seq[dst] = (seq + 1) & 0xFF
         self.stats["unreachable"] += 1
         raise Unreachable(f"station {dst} did not acknowledge after {MAX_RETRIES} retries")
 
     def recv(self, port, timeout=None):
         """(src, message) from port, or None after timeout seconds."""
+        if not 0 <= port < PORTS:
+            raise ValueError(f"port {port}: 0..{PORTS - 1}")
         try:
             return self.ports[port].get(timeout=timeout)
         except queue.Empty:

@@ -9,11 +9,26 @@ PAYLOAD_MAX = 128
 BODY_MAX = HEADER_LEN + PAYLOAD_MAX + CRC_LEN
 BROADCAST = 0xFF
 DATA, ACK, DGRAM = 1, 2, 3
+# frame.type = kind | session << SESSION_SHIFT (net/link.h, "Sessions")
+KIND_MASK, SESSION_SHIFT, SESSIONS = 0x03, 2, 64
 PORTS = 8
 MSG_MAX = 512
 PACKET_HDR_LEN = 2
 PACKET_DATA_MAX = PAYLOAD_MAX - PACKET_HDR_LEN
 PACKET_LAST = 0x80
+
+
+def frame_type(kind, session):
+    """The type byte of a frame of kind (DATA, ACK, DGRAM) from session (LINK_TYPE)."""
+    return kind | (session % SESSIONS) << SESSION_SHIFT
+
+
+def frame_kind(type_byte):
+    return type_byte & KIND_MASK
+
+
+def frame_session(type_byte):
+    return type_byte >> SESSION_SHIFT
 
 
 def crc16(data, crc=0xFFFF):

@@ -1,5 +1,7 @@
-"""make net-soak: N boards and the host peer on a faulty medium; every station
-sends M numbered reliable messages to every other station.
+"""make net-soak: N boards and H host peers on a faulty medium; every board
+sends M numbered reliable messages to every other station, every host peer to
+every board (host peers do not talk to each other). With one board and eight
+host peers, eight stations send to one board at once (make net-soak-fan-in).
 
 Last line: net-soak: sent X, delivered Y, in order, D duplicates, L lost
 (exit 0 only when Y == X, D == 0, L == 0). X counts every message a station
@@ -21,7 +23,7 @@ from netpeer import MediumTransport, Peer, Unreachable            # noqa: E402
 from netpeer.netnode import Board, MediumProcess, ROOT            # noqa: E402
 
 PORT_SOAK = 2
-HOST_STATION = 9
+HOST_STATIONS = (9, 10, 11, 12, 13, 14, 15, 8)   # the first is the single host peer's
 
 
 def soak_message(sender, number):
@@ -46,65 +48,41 @@ def run(args):
     sock = os.path.join(workdir, "air.sock")
     medium = MediumProcess(sock, seed=args.seed, loss=args.loss, corrupt=args.corrupt,
                            noise=args.noise, byte_errors=args.byte_errors)
-    stations = list(range(args.boards)) + ([HOST_STATION] if not args.no_host else [])
+    host_stations = list(HOST_STATIONS[:args.hosts])
+    stations = list(range(args.boards)) + host_stations
     elf = args.elf
     boards = []
-    peer = None
+    hosts = []
     t0 = time.monotonic()
-    host = dict(sent=0, failed=0, next={}, inorder={}, dup={})
     try:
         for s in range(args.boards):
             boards.append(Board(elf, s, sock, workdir, mode="soak", peers=stations,
                                 messages=args.messages, seed=args.seed + s,
                                 linger_ms=args.linger * 1000, fec=args.fec))
-        if not args.no_host:
-            peer = Peer(MediumTransport(sock), HOST_STATION, seed=args.seed, fec=args.fec)
-            for s in range(args.boards):
-                host["next"][s] = host["inorder"][s] = host["dup"][s] = 0
-
-            def host_rx():
-                while peer.running:
-                    got = peer.recv(PORT_SOAK, timeout=0.5)
-                    if got is None:
-                        continue
-                    src, msg = got
-                    if src not in host["next"]:
-                        continue
-                    try:
-                        sender, number = soak_unpack(msg)
-                    except (xdrlib3.Error, EOFError):
-                        continue
-                    if number == host["next"][src]:
-                        host["inorder"][src] += 1
-                        host["next"][src] += 1
-                    elif number < host["next"][src]:
-                        host["dup"][src] += 1
-                    else:
-                        host["next"][src] = number + 1
-            threading.Thread(target=host_rx, daemon=True).start()
-            for i in range(args.messages):
-                for s in range(args.boards):
-                    try:
-                        peer.send(s, PORT_SOAK, soak_message(HOST_STATION, i))
-                        host["sent"] += 1
-                    except Unreachable:
-                        host["failed"] += 1
+        for n, station in enumerate(host_stations):
+            hosts.append(HostSoak(Peer(MediumTransport(sock), station, seed=args.seed + n,
+                                       fec=args.fec), args.boards, args.messages))
+        senders = [threading.Thread(target=h.send_all, daemon=True) for h in hosts]
+        for t in senders:
+            t.start()
         deadline = time.monotonic() + args.timeout
+        for t in senders:
+            t.join(max(1.0, deadline - time.monotonic()))
         for b in boards:
             if not b.wait_for("netnode: done", max(1.0, deadline - time.monotonic())):
                 print(f"net-soak: station {b.station} did not finish; console:\n{b.text()}")
-        if peer is not None:           # 10 s of the boards' time for the last ACKs
-            peer.t.clock.wait_until(peer.t.clock.now() + 10, lambda: all(
-                host["next"][s] >= args.messages for s in host["next"]), poll=0.1)
+        for h in hosts:                # 10 s of the boards' time for the last ACKs
+            h.peer.t.clock.wait_until(h.peer.t.clock.now() + 10, h.all_in, poll=0.1)
     finally:
         for b in boards:
             b.stop()
-        if peer is not None:
-            peer.close()
+        for h in hosts:
+            h.peer.close()
         stats = medium.stats() if medium.proc.poll() is None else {}
         medium.stop()
     wall = time.monotonic() - t0
-    expected = len(stations) * (len(stations) - 1) * args.messages
+    # Every board hears from every other station, every host peer from every board.
+    expected = (args.boards * (len(stations) - 1) + len(hosts) * args.boards) * args.messages
     delivered = dups = 0
     for b in boards:
         text = b.text()
@@ -113,11 +91,11 @@ def run(args):
         for m in re.finditer(r"netnode: from (\d+): (\d+) in order, (\d+) duplicates", text):
             delivered += int(m.group(2))
             dups += int(m.group(3))
-    for s in host["inorder"]:
-        delivered += host["inorder"][s]
-        dups += host["dup"][s]
+    for h in hosts:
+        delivered += sum(h.inorder.values())
+        dups += sum(h.dup.values())
     lost = expected - delivered
-    print(f"net-soak: {args.boards} boards{' + host peer' if peer else ''}, "
+    print(f"net-soak: {args.boards} boards + {len(hosts)} host peers, "
           f"{args.messages} messages per pair, loss {args.loss}, corrupt {args.corrupt}, "
           f"byte errors {args.byte_errors}, fec {'on' if args.fec else 'off'}, "
           f"seed {args.seed}, {wall:.1f} s wall; medium: " +
@@ -125,6 +103,52 @@ def run(args):
     print(f"net-soak: sent {expected}, delivered {delivered}, in order, {dups} duplicates, "
           f"{lost} lost")
     return 0 if delivered == expected and dups == 0 and lost == 0 else 1
+
+
+class HostSoak:
+    """One host peer of the soak: sends M numbered messages to every board,
+    round robin, and checks what arrives from each (in order, duplicates)."""
+
+    def __init__(self, peer, boards, messages):
+        self.peer, self.boards, self.messages = peer, boards, messages
+        self.sent = self.failed = 0
+        self.next = {s: 0 for s in range(boards)}
+        self.inorder = {s: 0 for s in range(boards)}
+        self.dup = {s: 0 for s in range(boards)}
+        threading.Thread(target=self.receive, daemon=True).start()
+
+    def all_in(self):
+        return all(n >= self.messages for n in self.next.values())
+
+    def send_all(self):
+        for i in range(self.messages):
+            for s in range(self.boards):
+                try:
+                    self.peer.send(s, PORT_SOAK, soak_message(self.peer.station, i))
+                    self.sent += 1
+                except Unreachable:
+                    self.failed += 1
+
+    def receive(self):
+        while self.peer.running:
+            got = self.peer.recv(PORT_SOAK, timeout=0.5)
+            if got is None:
+                continue
+            src, msg = got
+            if src not in self.next:
+                continue
+            try:
+                sender, number = soak_unpack(msg)
+            except (xdrlib3.Error, EOFError):
+                continue
+            if number == self.next[src]:
+                self.inorder[src] += 1
+                self.next[src] += 1
+            elif number < self.next[src]:
+                self.dup[src] += 1
+            else:
+                self.next[src] = number + 1
+            self.peer.t.clock.notify()         # all_in() may hold now
 
 
 def main(argv=None):
@@ -139,13 +163,17 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=300.0)
     ap.add_argument("--linger", type=int, default=60, help="s a board waits for its peers")
-    ap.add_argument("--no-host", action="store_true")
+    ap.add_argument("--hosts", type=int, default=1,
+                    help=f"host peers (0..{len(HOST_STATIONS)}), stations {HOST_STATIONS}")
+    ap.add_argument("--no-host", dest="hosts", action="store_const", const=0)
     ap.add_argument("--elf", default=os.path.join(ROOT, "build", "firmware", "netnode",
                                                   "netnode.elf"))
     ap.add_argument("-v", "--verbose", action="store_true")
     args = ap.parse_args(argv)
-    if not 2 <= args.boards <= 4:
-        ap.error("BOARDS is 2 to 4")
+    if not 1 <= args.boards <= 4:
+        ap.error("BOARDS is 1 to 4")
+    if not 0 <= args.hosts <= len(HOST_STATIONS) or args.boards + args.hosts < 2:
+        ap.error(f"HOSTS is 0 to {len(HOST_STATIONS)}, and there are at least 2 stations")
     if not all(0 <= p <= 1 for p in (args.loss, args.corrupt, args.byte_errors, args.noise)):
         ap.error("LOSS, CORRUPT, BYTE_ERRORS and NOISE are probabilities 0..1")
     return run(args)

@@ -28,7 +28,9 @@ class Air:
         return self.medium
 
     def board(self, station, medium_sock="medium", **config):
-        """A board on this test's medium, or (medium_sock=None) on a pty."""
+        """A board on this test's medium, or (medium_sock=None) on a pty. A
+        station started again in the same test is its next boot (a new session)."""
+        config.setdefault("boot", sum(b.station == station for b in self.boards))
         b = Board(self.elf, station, self.sock if medium_sock == "medium" else medium_sock,
                   self.dir, **config)
         self.boards.append(b)

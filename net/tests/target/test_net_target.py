@@ -6,6 +6,10 @@ import time
 import pytest
 
 from netpeer import MediumTransport, Peer, Unreachable
+from netpeer.protocol import DATA, Frame, encode_frame, frame_type
+from netpeer.soak import soak_message
+
+from medium_station import MSG_PACE, Station
 
 
 def soak_results(text):
@@ -150,3 +154,66 @@ def test_host_peer_and_board_with_fec_through_byte_errors(air):
     assert board.wait_for("netnode: done", 60), board.text()
     corrected = re.search(r"fec: bytes corrected (\d+)", board.text())
     assert corrected and int(corrected[1]) > 0, board.text()
+
+
+def test_a_burst_from_one_station_does_not_stop_the_board(air):
+    """A raw station keys its transmitter for 300 back-to-back DATA frames to
+    the board, frame 40 an echo request: the board cannot get a single ACK
+    out while it lasts. Its transmit queue used to fill with those ACKs and
+    drop the echo's DATA frame, whose retransmission timer then never ran:
+    the link stayed busy for ever and every later send timed out (-110).
+    Now the board gives the echo up as unreachable (the raw station never
+    acknowledges) and answers the host peer that asks next."""
+    air.start_medium()
+    board = air.board(1, mode="echo", linger_ms=25000)
+    assert board.wait_for("station 1 up", 10), board.text()
+    raw = Station(air.sock, 5)
+    air.closers.append(raw.s.close)
+    raw.pace(19200)
+    raw.selects(1)
+    burst = b"".join(
+        encode_frame(Frame(5, 1, frame_type(DATA, 0), i & 0xFF,
+                           bytes((1 if i == 40 else 3, 0x80)) + (b"echo me" if i == 40 else b"x" * 8)))
+        for i in range(300))
+    raw.selects(2)
+    raw.send(burst)
+    raw.selects(1)
+    raw.read_msgs(MSG_PACE, timeout=120)                 # the medium played it (Pacing)
+    raw.s.close()
+    peer = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(peer.close)
+    peer.send(1, 1, b"still there?")
+    assert peer.recv(1, timeout=60) == (1, b"still there?"), board.text()
+    assert board.wait_for("netnode: done", 180), board.text()
+    text = board.text()
+    assert "echo to 5 failed (-113)" in text, text       # given up, not stuck (-110)
+    assert "(-110)" not in text, text
+    replaced = re.search(r"acks replaced (\d+)", text)
+    assert replaced and int(replaced[1]) > 0, text       # one queued ACK for the burst
+
+
+def test_restarted_stations_are_heard_again(air):
+    """Sequence numbers restart at 0 with a station. The board restarts and
+    sends its first message (seq 0) to the host peer, which had taken seq 0
+    from the board's previous boot; then the host peer restarts and sends
+    seq 0 to the board, which had taken seq 0 from the peer's previous
+    session. Each used to be acknowledged and dropped as a repeat."""
+    air.start_medium()
+    a = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(a.close)
+    first = air.board(1, mode="soak", peers=[1, 9], messages=1, linger_ms=500)
+    assert a.recv(2, timeout=60) == (1, soak_message(1, 0)), first.text()
+    assert first.wait_for("netnode: done", 60), first.text()
+    first.stop()
+    second = air.board(1, mode="soak", peers=[1, 9], messages=1, linger_ms=30000)
+    assert a.recv(2, timeout=60) == (1, soak_message(1, 0)), second.text()   # the new boot's
+    a.send(1, 2, soak_message(9, 0))                    # the peer's only message: seq 0
+    assert second.wait_for("netnode: done", 60), second.text()
+    per, sent = soak_results(second.text())
+    assert per[9] == (1, 0, 0) and sent == (1, 0), second.text()
+    a.close()
+    b = Peer(MediumTransport(air.sock), 9)              # the host peer restarted
+    air.closers.append(b.close)
+    assert b.session != a.session
+    b.send(1, 1, b"after the restart")                  # seq 0 again
+    assert b.recv(1, timeout=60) == (1, b"after the restart"), second.text()

@@ -9,7 +9,8 @@ import pytest
 
 from medium_station import MSG_CLOCK, MSG_DATA, Station
 from netpeer import MediumTransport, Peer                      # tools/ (conftest.py)
-from netpeer.protocol import ACK, Frame, FrameDecoder, encode_frame
+from netpeer.protocol import (ACK, Frame, FrameDecoder, encode_frame, frame_session,
+                              frame_type)
 from netpeer.transport import PeerClock
 
 
@@ -95,7 +96,8 @@ class SlowBoard:
             for when, f in [d for d in due if d[0] <= rnd]:
                 due.remove((when, f))
                 self.radio.selects(2)                    # TX
-                self.radio.send(encode_frame(Frame(self.station, f.src, ACK, f.seq)) + b"\x55")
+                ack = Frame(self.station, f.src, frame_type(ACK, frame_session(f.type)), f.seq)
+                self.radio.send(encode_frame(ack) + b"\x55")
                 self.radio.selects(1)
             time.sleep(1 / self.rate)
 
