@@ -20,14 +20,20 @@
 #   NAME_RUNNER    a host command that make run starts instead of QEMU on the
 #                  console (e.g. a co-simulation that starts QEMU itself)
 #   NAME_RUN_DEPS  further targets make run builds first (e.g. host libraries)
+#   NAME_BOOT      'self' for an image whose main starts the board itself
+#                  (board_start ... k_start); by default the image links
+#                  drivers/board_main.c, which starts the board and runs an
+#                  ordinary int main(void) as a thread
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
 APP_DEFAULT := ecosystem
 APP         ?= $(APP_DEFAULT)
 # Libraries every image may link: the target sources directly in these folders.
 APP_LIB_DIRS := drivers net pdl
-# Already in the firmware base objects or the kernel's own source list.
-APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS)
+# Already in the firmware base objects or the kernel's own source list; the
+# main-thread start-up is linked by name (NAME_BOOT), never from the archive.
+APP_BOOT_SRC := drivers/board_main.c
+APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS) $(APP_BOOT_SRC)
 
 include $(wildcard apps/*/app.mk)
 
@@ -45,11 +51,13 @@ define app_template
 $(1)_TICK_HZ ?= 1024
 $(1)_SRCS    ?= $$(wildcard apps/$(1)/*.c)
 $(1)_ICOUNT  ?= $$(FW_ICOUNT)
+$(1)_BOOT    ?= board
 $(1)_DIR     := $$(FW_BUILD)/$(1)
 $(1)_FLAGS   := $$(FW_CFLAGS) -I$$(ROOT)/kernel/include -I$$(ROOT)/kernel \
-                -DK_TICK_HZ=$$($(1)_TICK_HZ) $$($(1)_CFLAGS)
+                -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)
 $(1)_KOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(K_TARGET_SRCS))
-$(1)_AOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$($(1)_SRCS))
+$(1)_AOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$($(1)_SRCS) \
+                  $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)))
 $(1)_LIBS    := $$(foreach d,$$(APP_LIB_DIRS),$$(if $$(call app_lib_srcs,$$(d)),$$($(1)_DIR)/lib$$(d).a))
 
 $$($(1)_DIR)/obj/%.c.o: %.c

@@ -3,8 +3,8 @@
 
 For each image in apps/*, built with -fstack-usage -fcallgraph-info=su
 (make stack builds them into build/assure/stack), this reads every .ci file
-(GCC's call graph with each function's frame size; the compiler runtime's come
-from its build, build/cpu32-rt/ci), adds the assembly routines that have no .ci
+(GCC's call graph with each function's frame size; the compiler runtime's and
+the C library's come from their builds, build/cpu32-rt/ci and build/newlib/ci), adds the assembly routines that have no .ci
 (fixed sizes below), and walks the graph:
 
 - a direct call adds the callee's frame plus the 4-byte return address;
@@ -12,7 +12,8 @@ from its build, build/cpu32-rt/ci), adds the assembly routines that have no .ci
   the image takes (found from the relocations of the objects: a reference that
   is not the target of jsr/bsr/jmp), except thread entries, which only
   k_thread_start calls; so the bound is conservative;
-- recursion (a cycle in the graph) makes the bound unknown: the check fails.
+- recursion (a cycle in the graph) makes the bound unknown: the check fails, unless
+  assure/stack-recursion.txt bounds that cycle (the C library's two, with why).
 
 Threads come from the sources: every k_thread_create or board_spawn(..., ENTRY, ARG,
 STACK, SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
@@ -143,6 +144,22 @@ def address_taken(objs, edges):
     return taken
 
 
+def linked_library_objects(map_path, into):
+    """The members of the C library and the compiler runtime an image links (its
+    map's "archive(member)" lines), extracted under `into`: their relocations
+    tell which of their functions have their address taken (stdio's __swrite...)."""
+    members = {}
+    for m in re.finditer(r'^(\S+/(?:libc|libm|libbuiltins)\.a)\(([^)]+\.o)\)', open(map_path).read(), re.M):
+        members.setdefault(m.group(1), set()).add(m.group(2))
+    objs = []
+    for i, (archive, names) in enumerate(sorted(members.items())):
+        d = os.path.join(into, str(i))
+        os.makedirs(d, exist_ok=True)
+        subprocess.run([CROSS + 'ar', 'x', '--output', d, archive] + sorted(names), check=True)
+        objs += [os.path.join(d, n) for n in sorted(names)]
+    return objs
+
+
 def elf_functions(elf):
     out = subprocess.run([CROSS + 'nm', elf], capture_output=True, text=True).stdout
     return {l.split()[-1] for l in out.splitlines() if re.match(r'\S+ [tTW] ', l)}
@@ -253,9 +270,22 @@ def load_indirect(path):
     return table, closed
 
 
+def load_recursion(path):
+    """The recursions of assure/stack-recursion.txt: cycle -> the extra nestings
+    to count (each line: 'f -> g -> f | N | why')."""
+    bounds = {}
+    for line in open(path):
+        line = line.split('#', 1)[0].strip()
+        if line:
+            cycle, nest = (part.strip() for part in line.split('|')[:2])
+            bounds[cycle] = int(nest)
+    return bounds
+
+
 class Graph:
-    def __init__(self, frames, edges, dynamic, taken, entries, tables):
+    def __init__(self, frames, edges, dynamic, taken, entries, tables, recursion=None):
         table, closed = tables
+        self.bounded = recursion or {}
         self.frames, self.edges, self.dynamic = frames, edges, dynamic
         self.indirect = sorted(f for f in taken if f in frames and f not in entries)
         # caller@ancestor: the targets when the call chain passed through ancestor
@@ -292,8 +322,13 @@ class Graph:
         # targets, so it is a bounded nesting, not a cycle.
         for i, g in enumerate(stack):
             if g == f and next((a for a in reversed(stack[:i]) if a in self.contexts), None) == ctx:
-                self.recursive.add(' -> '.join(stack[i:] + (f,)))
-                return 0, ()
+                cycle = ' -> '.join(stack[i:] + (f,))
+                if cycle not in self.bounded:
+                    self.recursive.add(cycle)
+                    return 0, ()
+                # A listed recursion: its cycle again at most N more times.
+                once = sum(self.frames.get(h, UNKNOWN_FRAME) + RET for h in stack[i:])
+                return self.bounded[cycle] * once, ('(%s) x %d' % (cycle, self.bounded[cycle]),)
         if f in ASM_FRAMES:
             own = ASM_FRAMES[f]
         elif f in self.frames:
@@ -426,9 +461,11 @@ def main():
             print('%s: no image %s' % (app, elf)); bad += 1; continue
         cis = glob.glob(os.path.join(a.build, 'obj', '**', '*.ci'), recursive=True) + \
             glob.glob(os.path.join(a.build, app, '**', '*.ci'), recursive=True) + \
-            glob.glob(os.path.join(ROOT, 'build', 'cpu32-rt', 'ci', '*.ci'))
+            glob.glob(os.path.join(ROOT, 'build', 'cpu32-rt', 'ci', '*.ci')) + \
+            glob.glob(os.path.join(ROOT, 'build', 'newlib', 'ci', '*.ci'))
         objs = glob.glob(os.path.join(a.build, 'obj', '**', '*.o'), recursive=True) + \
-            glob.glob(os.path.join(a.build, app, 'obj', '**', '*.o'), recursive=True)
+            glob.glob(os.path.join(a.build, app, 'obj', '**', '*.o'), recursive=True) + \
+            linked_library_objects(elf[:-4] + '.map', os.path.join(a.build, app, 'libobj'))
         if not cis:
             print('%s: no .ci files (build with FW_STACK_INFO=1)' % app); bad += 1; continue
         frames, edges, dynamic = parse_ci(cis)
@@ -443,7 +480,8 @@ def main():
         threads = [t for t in threads if t[2] is not None or t[1] not in sized]
         taken = address_taken(objs, edges) & linked
         g = Graph(frames, edges, dynamic, taken, {t[1] for t in threads},
-                  load_indirect(os.path.join(ROOT, 'assure', 'stack-indirect.txt')))
+                  load_indirect(os.path.join(ROOT, 'assure', 'stack-indirect.txt')),
+                  load_recursion(os.path.join(ROOT, 'assure', 'stack-recursion.txt')))
         guard = evaluate('K_STACK_GUARD_WORDS', defs) or 0
         irq_ok, irq_lines, irq_stack, extra, extra_path = interrupt_model(
             g, elf, sources + headers, defs, linked, guard)

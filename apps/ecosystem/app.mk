@@ -6,3 +6,5 @@ ecosystem_TICK_HZ := 128
 ecosystem_RUNNER  = $(PYTHON) $(ROOT)/emu/world/run.py --elf $(call app_elf,ecosystem) \
                     --qemu $(QEMU_M68K) --host-lib $(ECO_HOST_LIB) $(ECO_RUN_ARGS)
 ecosystem_RUN_DEPS = eco-host
+# Its main starts the board itself (board_start ... k_start).
+ecosystem_BOOT := self

@@ -4,3 +4,5 @@
 # sets and reads the board model over QMP. Test-only: the shell image
 # (apps/shell) is the one for people.
 iotest_TICK_HZ := 1024
+# Its main starts the board itself (board_start ... k_start).
+iotest_BOOT := self

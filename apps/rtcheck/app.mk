@@ -1,7 +1,9 @@
 # The compiler runtime and the C library checked on the board: int <-> float
 # conversions, float and double arithmetic, 64-bit division and shifts, printf's
 # conversions, string.h, stdlib.h, float libm, dt() and (float)value(q) in a PDL
-# process, each compared with the host's result (apps/rtcheck/tests/).
+# process, each compared with the host's result (apps/rtcheck/tests/). The suite
+# also runs apps/hello's tests (an ordinary main as a thread, printf's cost): that
+# image's app.mk stays the one comment line a new program needs.
 rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c
 
 RTCHECK_HOST := $(BUILD)/tests/rtcheck_host
@@ -14,6 +16,6 @@ CHECKS += rtcheck
 .PHONY: check-rtcheck
 check-rtcheck:
 	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=rtcheck $(RTCHECK_HOST)
+	@$(MAKE) --no-print-directory $(call app_elf,rtcheck) $(call app_elf,hello) $(RTCHECK_HOST)
 	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) RTCHECK_HOST=$(RTCHECK_HOST) \
-	    ci/pytest-suite rtcheck apps/rtcheck/tests
+	    ci/pytest-suite rtcheck apps/rtcheck/tests apps/hello/tests

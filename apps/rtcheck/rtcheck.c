@@ -2,7 +2,8 @@
  * Compiler runtime check image: the vectors of rt_vectors.c computed on the
  * CPU32 through the compiler runtime every image links, then dt() and
  * (float)value(q) from inside a running PDL process (the paper's section 5
- * uses both). apps/rtcheck/tests/ compares each line with the host's.
+ * uses both). apps/rtcheck/tests/ compares each line with the host's. An
+ * ordinary main (drivers/board_main.c starts the board and runs it as a thread).
  *
  * Console: "RT NAME INDEX BITS" per vector (BITS: 16 hex digits), "RT done N",
  * the C library's lines of rt_libc.c (through newlib's printf) and "RT libc N",
@@ -13,7 +14,6 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
 #include "pdl/pdl.h"
 #include "rt_libc.h"
 #include "rt_vectors.h"
@@ -21,9 +21,6 @@
 #define RT_PDL_HZ 100u
 #define PDL_CHECK_CYCLES 8u
 #define RT_VALUE_START (-16777215)
-
-static struct k_thread rt_thread;
-K_STACK_DEFINE(rt_stack, 2048u);
 
 static struct pdl_quantity counter;
 static volatile uint32_t seen;
@@ -57,12 +54,11 @@ static void rtcheck_observe(void)
     add_value(counter, -1);
 }
 
-static void *rt_main(void *arg)
+int main(void)
 {
     unsigned n;
     uint32_t i;
     int r;
-    (void)arg;
     n = rt_vectors_run(rtcheck_emit);
     k_printf("RT done %u\n", n);
     k_printf("RT libc %d\n", rt_libc_run());
@@ -75,7 +71,7 @@ static void *rt_main(void *arg)
         r = run_pdl();
     if (r < 0) {
         k_printf("RT failed: %s (%d)\n", pdl_strerror(r), r);
-        return NULL;
+        return 1;
     }
     while (seen < PDL_CHECK_CYCLES)
         (void)k_sleep_ticks(K_TICK_HZ / RT_PDL_HZ);
@@ -85,15 +81,5 @@ static void *rt_main(void *arg)
     for (i = 0; i < PDL_CHECK_CYCLES; i++)
         k_printf("RT value_float %lu %08lx\n", (unsigned long)i, (unsigned long)value_bits[i]);
     k_printf("RT end\n");
-    return NULL;
-}
-
-int main(void)
-{
-    board_start("rtcheck");
-    if (board_spawn(&rt_thread, "rtcheck", rt_main, NULL, rt_stack, sizeof rt_stack,
-                    K_PRIO_APP_MIN + 1u) != K_OK)
-        k_printf("RT failed: thread\n");
-    k_start();
     return 0;
 }

@@ -14,3 +14,5 @@ check-shell-target:
 	@$(MAKE) --no-print-directory firmware APP=shell
 	@BSCHED_QEMU=$(QEMU_M68K) SHELL_ELF=$(call app_elf,shell) \
 	    ci/pytest-suite shell-target apps/shell/tests
+# Its main starts the board itself (board_start ... k_start).
+shell_BOOT := self

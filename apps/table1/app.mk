@@ -2,3 +2,5 @@
 # 128 Hz instead of the kernel's 1024 Hz: every minor cycle prints its line,
 # which must fit in its tick at 38400 baud (see table1.c).
 table1_TICK_HZ := 128
+# Its main starts the board itself (board_start ... k_start).
+table1_BOOT := self

@@ -4,7 +4,7 @@
 # printf formats a long double as a double (__truncxfdf2, from the runtime's GCC
 # part, ci/setup.d/m68k/runtime.sh). Sourced by ci/setup.d/m68k.sh. Picolibc would be smaller, but bookworm's picolibc source package
 # cannot be fetched here; newlib-source ships its tarball in a binary package.
-# The result (include/, lib/libc.a, lib/libm.a) lives in $BSCHED_TOOLS/newlib/HASH
+# The result (include/, lib/libc.a, lib/libm.a, ci/*.ci) lives in $BSCHED_TOOLS/newlib/HASH
 # (HASH: this script and the cross compiler's version); each checkout links
 # build/newlib to the one it wants. The system calls newlib needs (read, write,
 # sbrk, _exit, ...) are the board's: drivers/libc_syscalls.c.
@@ -38,8 +38,11 @@ if [ ! -f "$nl_dir/lib/libc.a" ]; then
         # headers would take the board for a Linux system (sys/config.h gives Linux a
         # dynamic reentrancy structure). -nostdinc: no header of the build machine's
         # C libraries. -fwrapv: as the compiler runtime (ci/setup.d/m68k.sh).
+        # -fstack-usage/-fcallgraph-info: the frames and callees of every routine in
+        # ci/, for the worst-case stack analysis (assure/stack.py).
         export CFLAGS_FOR_TARGET="-mcpu=cpu32 -msoft-float -Os -g -ffunction-sections -fdata-sections \
--fwrapv -U__linux__ -U__gnu_linux__ -Ulinux -U__unix__ -Uunix -nostdinc -isystem $gcc_include"
+-fwrapv -U__linux__ -U__gnu_linux__ -Ulinux -U__unix__ -Uunix -nostdinc -isystem $gcc_include \
+-fstack-usage -fcallgraph-info=su"
         if ! (cd "$work/build" && "$work/src/configure" --target=m68k-elf --prefix="$nl_dir.tmp" \
                 --disable-multilib --disable-nls --disable-newlib-supplied-syscalls \
                 --enable-newlib-io-long-long --enable-newlib-io-c99-formats --enable-newlib-nano-malloc \
@@ -56,6 +59,9 @@ if [ ! -f "$nl_dir/lib/libc.a" ]; then
         mkdir -p "$nl_dir"
         mv "$nl_dir.tmp/m68k-elf/include" "$nl_dir/include"
         mv "$nl_dir.tmp/m68k-elf/lib" "$nl_dir/lib"
+        mkdir -p "$nl_dir/ci"
+        (cd "$work/build/m68k-elf/newlib" && find . -name '*.ci' | while read -r ci; do
+            cp "$ci" "$nl_dir/ci/$(echo "${ci#./}" | tr / _)"; done)
         cp "$work/src/COPYING.NEWLIB" "$nl_dir/"
         rm -rf "$nl_dir.tmp" "$work"
         echo "ci/setup: newlib built in $(( $(date +%s) - start )) s" >&2

@@ -12,7 +12,8 @@
  *   3. jumped to the stub, which moves the flash to 0xE00000 (CSBARBT) and
  *      jumps into the relocated flash at the link address,
  * after which the code runs where it is linked, maps the SRAM at 0, sets
- * SP, VBR, copies .data, clears .bss and calls main().
+ * SP, VBR, copies .data, clears .bss and calls firmware_entry (main, or
+ * drivers/board_main.c's start-up that runs main as a thread).
  */
 
 /* SIM and TPURAM control registers (MC68332, SIMCR.MM = 1). */
@@ -146,9 +147,18 @@ cpu32_relocated:
     clr.l   (%a1)+
     bra.s   5b
 
-6:  jsr     main
-    jmp     cpu32_halt                    /* main returned: nothing left to do */
+6:  jsr     firmware_entry
+    jmp     cpu32_halt                    /* it returned: nothing left to do */
     .size   cpu32_reset, . - cpu32_reset
+
+/* The C entry. An image whose main starts the board itself (board_start ...
+ * k_start) is entered at main; an image that links drivers/board_main.c gets
+ * that file's firmware_entry, which starts the board and runs main as a thread. */
+    .weak   firmware_entry
+    .type   firmware_entry, @function
+firmware_entry:
+    jmp     main
+    .size   firmware_entry, . - firmware_entry
 
 /* ------------------------------------------------------------------------ */
     .text

@@ -1,0 +1,1 @@
+# An ordinary C program: apps/hello/main.c (make run APP=hello).
