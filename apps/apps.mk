@@ -104,3 +104,25 @@ else
 	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) -nographic $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
 endif
+
+# make new-app NAME=x: apps/x/ from the PDL program template (apps/pdl_hello),
+# ready for make run APP=x. NAME: a lower-case C identifier not yet taken.
+NEW_APP_TEMPLATE := apps/pdl_hello
+.PHONY: new-app
+# Through the environment, so no character of NAME reaches the shell as syntax.
+new-app: export NEW_APP_NAME = $(NAME)
+new-app:
+	@name="$$NEW_APP_NAME"; \
+	if ! printf '%s' "$$name" | grep -Eqx '[a-z][a-z0-9_]{0,31}'; then \
+	    echo "make new-app: NAME='$$name': use a lower-case C identifier of 1-32 characters (make new-app NAME=my_robot)" >&2; exit 2; fi; \
+	if [ -e "apps/$$name" ]; then \
+	    echo "make new-app: apps/$$name exists already; choose another NAME" >&2; exit 2; fi; \
+	mkdir -p "apps/$$name" && cp $(NEW_APP_TEMPLATE)/main.c "apps/$$name/main.c" && \
+	echo "# A PDL program: apps/$$name/main.c (make run APP=$$name)." > "apps/$$name/app.mk" && \
+	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name"
+
+CHECKS += new-app
+.PHONY: check-new-app
+check-new-app:
+	@$(SETUP) base m68k qemu
+	@BSCHED_QEMU=$(QEMU_M68K) ci/pytest-suite new-app apps/pdl_hello/tests
