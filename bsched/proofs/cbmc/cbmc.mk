@@ -102,6 +102,8 @@ $(foreach r,$(CBMC_DEEP_RUNS),$(eval CBMC_DEEP_HARNESS_$(r) := $(or $(CBMC_HARNE
 CHECKS += cbmc cbmc-negative
 PROOF_CHECKS += cbmc cbmc-negative
 
+# The cbmc binary the harnesses use (Makefile.common picks it the same way).
+CBMC_BIN ?= $(or $(wildcard $(BSCHED_TOOLS)/cbmc/bin/cbmc),$(shell command -v cbmc),$(BSCHED_TOOLS)/cbmc/bin/cbmc)
 cbmc_sub = $(MAKE) --no-print-directory -s -C $(CBMC_PROOFS)/$(1) ROOT=$(ROOT) BUILD=$(BUILD)
 
 .PHONY: cbmc cbmc-deep check-cbmc check-cbmc-negative check-cbmc-deep cbmc-report
@@ -130,6 +132,7 @@ CBMC_MUTANT_RESULT_DIRS := $(addprefix $(BUILD)/cbmc/,$(addsuffix -mutant,$(CBMC
 
 check-cbmc:
 	@$(SETUP) cbmc
+	@CBMC=$(CBMC_BIN) KISSAT=$(dir $(CBMC_BIN))kissat python3 bsched/proofs/tools_check.py --only cbmc,kissat
 	@rm -f $(addsuffix /result.txt,$(CBMC_RESULT_DIRS))
 	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) || true
 	@$(call cbmc_record,cbmc,$(CBMC_RESULT_DIRS))
@@ -143,6 +146,7 @@ check-cbmc-negative:
 # Both suites in one pool of CBMC_JOBS, then both records.
 cbmc:
 	@$(SETUP) cbmc
+	@CBMC=$(CBMC_BIN) KISSAT=$(dir $(CBMC_BIN))kissat python3 bsched/proofs/tools_check.py --only cbmc,kissat
 	@rm -f $(addsuffix /result.txt,$(CBMC_RESULT_DIRS) $(CBMC_MUTANT_RESULT_DIRS))
 	+@$(MAKE) --no-print-directory -k -j$(CBMC_JOBS) $(addprefix cbmc-run-,$(CBMC_RUNS)) \
 	    $(addprefix cbmc-mutant-,$(CBMC_MUTANT_RUNS)) || true

@@ -104,6 +104,7 @@ wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(if $(wp_session_on),script$(wp_co
 # WP_MIN_GOALS goals, or an axiom in the spec fails the target.
 prove:
 	@$(SETUP) frama-c
+	@python3 bsched/proofs/tools_check.py --only frama-c,why3,z3,cvc4,cvc5
 	@mkdir -p $(WP_OUT)
 	@$(if $(wp_session_on),python3 bsched/proofs/wp/wp_session.py install $(WP_SESSION_TSV) $(WP_OUT)/session \
 	    --steps $(WP_STEPS) --steps-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT),rm -rf $(WP_OUT)/session)
@@ -185,3 +186,15 @@ check-wp-negative:
 	    else fail=$$((fail+1)); echo "FAILED: $$g proven on the mutant"; fi; \
 	done; \
 	$(call record,wp-negative,$$pass,$$fail); [ $$fail -eq 0 ]
+
+# The installed proof tools are the ones bsched/proofs/tools.txt lists (the verified
+# configuration); and the check itself fails on a manifest that differs.
+CHECKS += proof-tools
+.PHONY: check-proof-tools
+check-proof-tools:
+	@$(SETUP) frama-c cbmc
+	@bad=$$(mktemp); sed 's/^z3 *4\.8\.12 /z3         4.8.99 /' bsched/proofs/tools.txt > $$bad; \
+	if python3 bsched/proofs/tools_check.py --strict --only z3 --manifest $$bad > /dev/null; then \
+	    echo "FAILED: a manifest listing z3 4.8.99 was not refused"; rm -f $$bad; $(call record,proof-tools,0,1); exit 1; fi; \
+	rm -f $$bad; echo "ok: a manifest that differs is refused"
+	@CBMC=$(CBMC_BIN) KISSAT=$(dir $(CBMC_BIN))kissat python3 bsched/proofs/tools_check.py --strict --suite proof-tools
