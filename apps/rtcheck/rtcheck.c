@@ -11,7 +11,11 @@
  * bits and dt_us()), "RT value_float CYCLE BITS" ((float)value(q) of an
  * integer quantity that counts down from RT_VALUE_START), and "RT end".
  */
+#include <errno.h>
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "kernel.h"
 #include "pdl/pdl.h"
@@ -80,6 +84,25 @@ int main(void)
                  (unsigned long)dt_usecs[i]);
     for (i = 0; i < PDL_CHECK_CYCLES; i++)
         k_printf("RT value_float %lu %08lx\n", (unsigned long)i, (unsigned long)value_bits[i]);
+    {
+        /* malloc in the SRAM between .bss and the stack: a small block, and one
+         * larger than the whole SRAM, which must fail with ENOMEM. */
+        void *small = malloc(1000u), *huge;
+        errno = 0;
+        huge = malloc(2u << 20);
+        k_printf("RT malloc small=%d huge_refused=%d enomem=%d\n", small != NULL, huge == NULL,
+                 errno == ENOMEM);
+        free(small);
+    }
     k_printf("RT end\n");
+    {
+        /* stdin: a console line, edited and echoed, through newlib's fgets and read(0). */
+        char line[40];
+        printf("RT input?\n");
+        if (fgets(line, sizeof line, stdin) != NULL) {
+            line[strcspn(line, "\n")] = '\0';
+            printf("RT input [%s] getchar=%d\n", line, getchar());
+        }
+    }
     return 0;
 }

@@ -63,7 +63,7 @@ def f32_bits(x):
 
 def vector_lines(lines):
     return [line for line in lines if line.startswith("RT ")
-            and not re.match(r"RT (dt|value_float|end|libc)\b", line)]
+            and not re.match(r"RT (dt|value_float|end|libc|malloc)\b", line)]
 
 
 def test_vectors_match_host(board_lines, host_lines):
@@ -129,3 +129,18 @@ def test_float_of_an_integer_quantity(board_lines):
     for _, _, cycle, bits in vals:
         expected = f32_bits(float(VALUE_START - int(cycle)))   # rounds -16777217 to even
         assert int(bits, 16) == expected, (cycle, bits, hex(expected))
+
+
+def test_malloc_and_console_input():
+    """malloc from the board's heap (ENOMEM past it), and stdin: fgets and getchar
+    read console lines, edited and echoed by the console driver."""
+    elf = FW / "rtcheck" / "rtcheck.elf"
+    with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
+        text = m.console.read_until(b"RT input?", timeout=60).decode("latin-1")
+        assert "RT malloc small=1 huge_refused=1 enomem=1" in text, text[-500:]
+        m.console_write_taken(b"robot 42\r")
+        m.console_write_taken(b"x\r")
+        text = m.console.read_until(b"getchar=", timeout=20).decode("latin-1")
+        text += m.console.read_until(b"\n", timeout=10).decode("latin-1")
+    # getchar reads the next line's first character: 'x' (120).
+    assert "RT input [robot 42] getchar=120" in text, text
