@@ -189,6 +189,16 @@ def evaluate(expr, defs, depth=0):
         return None
 
 
+def pdl_process_bodies(sources):
+    """The functions a program gives add_process or add_process_pv: the PDL
+    runtime calls them (and only them) through its process pointer."""
+    bodies = set()
+    for p in sources:
+        text = re.sub(r'/\*.*?\*/', '', open(p, errors='replace').read(), flags=re.S)
+        bodies.update(re.findall(r'\badd_process(?:_pv)?\s*\(\s*&?\s*(\w+)\s*[,)]', text))
+    return bodies
+
+
 def find_threads(sources, defs, linked):
     text = {p: re.sub(r'/\*.*?\*/', '', open(p, errors='replace').read(), flags=re.S) for p in sources}
     stacks = {}
@@ -479,8 +489,11 @@ def main():
         sized = {t[1] for t in threads if t[2] is not None}
         threads = [t for t in threads if t[2] is not None or t[1] not in sized]
         taken = address_taken(objs, edges) & linked
+        indirect_table = load_indirect(os.path.join(ROOT, 'assure', 'stack-indirect.txt'))
+        for caller in ('pdl_core_run_process', 'pdl_cycle_run'):
+            indirect_table[0].setdefault(caller, set()).update(pdl_process_bodies(sources))
         g = Graph(frames, edges, dynamic, taken, {t[1] for t in threads},
-                  load_indirect(os.path.join(ROOT, 'assure', 'stack-indirect.txt')),
+                  indirect_table,
                   load_recursion(os.path.join(ROOT, 'assure', 'stack-recursion.txt')))
         guard = evaluate('K_STACK_GUARD_WORDS', defs) or 0
         irq_ok, irq_lines, irq_stack, extra, extra_path = interrupt_model(
