@@ -94,10 +94,10 @@ $(call check_whole_number,make run,RUN_SECONDS,1,86400,make run [APP=NAME] [RUN_
 endif
 endif
 
-# The console is the emulator's stdio and carries bytes only: no -nographic
-# (it multiplexes QEMU's monitor onto stdin, where Ctrl-A c gives whoever
-# writes to the console the monitor and with it commands on the host), and
-# -monitor none. The stdio chardev keeps its default signal=on, so Ctrl-C
+# The console is the emulator's stdio and carries bytes only, with -monitor
+# none: not QEMU's no-graphics mode, which multiplexes its monitor onto stdin
+# (Ctrl-A c there gives whoever writes to the console the monitor, and with
+# migrate "exec:..." commands on the host). The stdio chardev keeps its default signal=on, so Ctrl-C
 # typed at the terminal ends QEMU (and make run); an image can also end the
 # run itself (the shell's `exit`: apps/shell/README.md). QEMU_CONSOLE_ARGS is
 # the one place make run names the console; the shell's tests check it.

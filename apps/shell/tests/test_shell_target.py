@@ -11,7 +11,9 @@ leaves the shell at its prompt. Environment (set by make check-shell-target):
 """
 import os
 import re
+import shutil
 import subprocess
+import tempfile
 import time
 from pathlib import Path
 
@@ -342,6 +344,38 @@ def test_many_lines_at_once_lose_nothing(shell):
     assert int(m.group(5)) == 0 and int(m.group(6)) == 0
 
 
+def test_bytes_above_ascii_are_not_echoed(shell):
+    """C1 controls (0x9B CSI, 0x90 DCS, ...) and every other byte above 0x7F are
+    dropped by the line editor: never echoed to the terminal, never in a command."""
+    shell.one("led off")
+    shell.m.console.write(b"le\x9bd \x90\xc2\x9bo\x9dn\xff\r")
+    out = shell.m.console.read_until(PROMPT)
+    assert all(b < 0x80 for b in out), out
+    assert b"led on" in out and b"led = on" in out
+    assert shell.qget("/machine/sim", "led") is True
+    shell.one("led off")
+
+
+def test_exit_stops_the_motors_and_halts_the_board():
+    """On a board of its own: exit leaves every motor at 0 and the CPU halted,
+    so nothing typed afterwards is answered."""
+    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off"]) as m:
+        sh = Shell(m)
+        assert sh.one("motor 0 600") == "motor 0 = 600 per-mille"
+        assert sh.one("speed 1 500").startswith("speed 1 = ")
+        assert "exit" in sh.run("help")[-1]
+        m.console.write(b"exit\r")
+        out = m.console.read_until(b"halted (end the emulator with Ctrl-C)\r\n", timeout=20)
+        assert b"shell: exit: motors stopped, board halted" in out
+        for i in range(3):
+            assert m.qom_get(IO + f"/motor{i}", "direction") == 0, i
+        m.console.write(b"led on\r")
+        time.sleep(1.0)
+        m.console.poll()
+        assert bytes(m.console.received) == b""        # no echo, no answer, no prompt
+        assert m.qom_get("/machine/sim", "led") is False
+
+
 def test_make_run_with_piped_stdin_ends_by_itself():
     """printf 'help\\nuptime\\n' | make run APP=shell RUN_SECONDS=N: the commands
     are answered from stdin and the run stops at the time limit."""
@@ -392,6 +426,12 @@ def test_net_statistics_and_start(shell):
     assert shell.one("net") == "net: not started (net start STATION)"
     for bad in ("net bogus", "net start", "net start 256", "net start x", "net start 1 2"):
         shell.error(bad)
+    # the link layer's stations are 0..15: the range is named, no bare error code
+    for bad in ("16", "255", "-1", "99999999999"):
+        answer = shell.error(f"net start {bad}")
+        assert "0..15" in answer and "(-" not in answer, answer
+    assert shell.error("net start 16") == "error: net: station 16 out of range 0..15"
+    assert shell.one("net") == "net: not started (net start STATION)"
     assert shell.one("net start 2") == "net: station 2 started"
     stats = shell.run("net")
     assert stats[0] == "net: station 2"
@@ -399,3 +439,81 @@ def test_net_statistics_and_start(shell):
     assert re.match(r"  retransmissions \d+, collisions \d+, deferrals \d+, mac drops \d+$", stats[2])
     assert stats[3].startswith("  messages delivered 0, duplicates dropped 0, unreachable 0")
     assert "already started" in shell.error("net start 3")
+
+
+def test_make_run_console_carries_bytes_only():
+    """The console of make run is the emulator's stdio and nothing else: Ctrl-A
+    c used to open QEMU's monitor (-nographic multiplexes it onto stdin), and
+    its migrate "exec:..." ran a command on the host; Ctrl-A x ended QEMU.
+    Now those bytes reach the shell like any others."""
+    # a short folder: the monitor command must fit the shell's 80-character line,
+    # so that the shell's answer to it shows that it arrived whole
+    folder = Path(tempfile.mkdtemp(prefix="bsched-"))
+    target = folder / "pwned"
+    attack = (b"uptime\n\x01cmigrate \"exec:id > " + str(target).encode() + b"\"\n"
+              b"\x01c\x01x\nled on\nuptime\n")
+    proc = subprocess.run(
+        ["make", "--no-print-directory", "run", "APP=shell", "RUN_SECONDS=8"],
+        cwd=ROOT, input=attack, capture_output=True, timeout=120)
+    out = proc.stdout.decode("latin-1").replace("\r\n", "\n")
+    created = target.exists()
+    shutil.rmtree(folder)
+    assert not created, "the monitor ran a command on the host"
+    assert proc.returncode == 0, proc.stderr.decode("latin-1")[-2000:]
+    assert "error: unknown command 'cmigrate'" in out, out      # the bytes went to the shell
+    assert "led = on" in out                                    # Ctrl-A x did not end QEMU
+    assert len(re.findall(r"^uptime \d+\.\d{3} s", out, re.M)) == 2, out
+    assert "(qemu)" not in out and "QEMU" not in out
+    banner = proc.stderr.decode("latin-1")
+    assert "quit with Ctrl-C" in banner and "Ctrl-A" not in banner, banner
+
+
+MAKE_RUN_BAD = [
+    ("RUN_SECONDS=0", "RUN_SECONDS=0: out of range 1..86400"),
+    ("RUN_SECONDS=abc", "RUN_SECONDS='abc': not a whole number"),
+    ("RUN_SECONDS=-3", "RUN_SECONDS='-3': not a whole number"),
+    ("RUN_SECONDS=2.5", "RUN_SECONDS='2.5': not a whole number"),
+    ("RUN_SECONDS=1 2", "RUN_SECONDS='1 2': not a whole number"),
+    ("RUN_SECONDS=100000", "RUN_SECONDS=100000: out of range 1..86400"),
+]
+
+
+@pytest.mark.parametrize("option, names", MAKE_RUN_BAD, ids=[o for o, _ in MAKE_RUN_BAD])
+def test_make_run_bad_run_seconds_is_one_line_and_exit_2(option, names):
+    try:
+        p = subprocess.run(["make", "--no-print-directory", "run", "APP=shell", option],
+                           cwd=ROOT, capture_output=True, text=True, timeout=60,
+                           stdin=subprocess.DEVNULL)
+    except subprocess.TimeoutExpired:
+        pytest.fail(f"make run {option} still running after 60 s")
+    assert p.returncode == 2
+    lines = p.stderr.splitlines()
+    assert len(lines) == 1, p.stderr
+    assert f"make run: {names}" in lines[0] and "usage: make run " in lines[0], lines[0]
+    assert p.stdout == ""
+
+
+def test_no_emulator_is_started_with_the_monitor_on_a_console():
+    """Every place that starts QEMU (make run, the runners, the tests, the
+    tools): no -nographic, no mon:stdio, no muxed chardev, and make run's
+    console arguments are -display none -monitor none -serial stdio."""
+    here = Path(__file__).resolve()
+    bad = []
+    for path in ROOT.rglob("*"):
+        if (path.suffix not in (".py", ".mk", ".sh") and path.name != "Makefile") \
+                or "build" in path.relative_to(ROOT).parts or path == here \
+                or not path.is_file():
+            continue
+        text = path.read_text(errors="replace")
+        for needle in ("-nographic", "mon:stdio", "mux=on"):
+            if needle in text:
+                bad.append(f"{path.relative_to(ROOT)}: {needle}")
+    assert bad == []
+    apps_mk = (ROOT / "apps" / "apps.mk").read_text()
+    assert "QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio" in apps_mk
+    p = subprocess.run(["make", "--no-print-directory", "-n", "run", "APP=shell"], cwd=ROOT,
+                       capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL,
+                       env=dict(os.environ, MAKEFLAGS=""))
+    qemu_line = [ln for ln in p.stdout.splitlines() if "-M robocube -icount" in ln]
+    assert len(qemu_line) == 1, p.stdout
+    assert "-display none -monitor none -serial stdio" in qemu_line[0]
