@@ -58,9 +58,10 @@ static void print_help(void)
            PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS);
 }
 
-/* Numbers the members of each class in input order, in one pass: a running
- * count per priority value (process_name used to count the earlier members of
- * the class for every name, O(n^2) for Table 2's n names per cycle). */
+/* Numbers the members of each class in input order, in one pass (a running
+ * count per priority value), so that naming a process costs O(1): Table 2
+ * names every process of every minor cycle, and counting a process's earlier
+ * class members at each name made 16,000 processes take a minute. */
 static void number_members(void)
 {
     uint16_t seen[BSCHED_MAX_PV + 1] = {0};
