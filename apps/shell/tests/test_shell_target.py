@@ -10,8 +10,11 @@ leaves the shell at its prompt. Environment (set by make check-shell-target):
   SHELL_ELF     build/firmware/shell/shell.elf
 """
 import os
+import pty
 import re
+import select
 import shutil
+import signal
 import subprocess
 import tempfile
 import time
@@ -26,6 +29,22 @@ ELF = Path(os.environ.get("SHELL_ELF", ROOT / "build" / "firmware" / "shell" / "
 IO = "/machine/robocube-io"
 PROMPT = b"shell> "
 LINE_MAX = 80          # SHELL_LINE_MAX in apps/shell/shell.h
+
+
+def run_make(args, stdin=b"", timeout=120):
+    """make ARGS in the tree with stdin, in a session of its own: on a timeout
+    the whole group (make, its shell, timeout, QEMU) is killed, not make alone,
+    so no emulator outlives the test. Returns (returncode, stdout, stderr)."""
+    proc = subprocess.Popen(["make", "--no-print-directory", *args], cwd=ROOT,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, start_new_session=True)
+    try:
+        out, err = proc.communicate(stdin, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        pytest.fail(f"make {' '.join(args)} still running after {timeout} s")
+    return proc.returncode, out, err
 
 
 class Shell:
@@ -380,12 +399,11 @@ def test_make_run_with_piped_stdin_ends_by_itself():
     """printf 'help\\nuptime\\n' | make run APP=shell RUN_SECONDS=N: the commands
     are answered from stdin and the run stops at the time limit."""
     start = time.monotonic()
-    proc = subprocess.run(
-        ["make", "--no-print-directory", "run", "APP=shell", "RUN_SECONDS=5"],
-        cwd=ROOT, input=b"help\nuptime\nled on\n", capture_output=True, timeout=120)
+    rc, stdout, stderr = run_make(["run", "APP=shell", "RUN_SECONDS=5"],
+                                  b"help\nuptime\nled on\n")
     elapsed = time.monotonic() - start
-    out = proc.stdout.decode("latin-1").replace("\r\n", "\n")
-    assert proc.returncode == 0, proc.stderr.decode("latin-1")[-2000:]
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
     assert "shell> help\n" in out
     assert "  i2c scan" in out
     assert re.search(r"shell> uptime\nuptime \d+\.\d{3} s", out), out
@@ -452,19 +470,17 @@ def test_make_run_console_carries_bytes_only():
     target = folder / "pwned"
     attack = (b"uptime\n\x01cmigrate \"exec:id > " + str(target).encode() + b"\"\n"
               b"\x01c\x01x\nled on\nuptime\n")
-    proc = subprocess.run(
-        ["make", "--no-print-directory", "run", "APP=shell", "RUN_SECONDS=8"],
-        cwd=ROOT, input=attack, capture_output=True, timeout=120)
-    out = proc.stdout.decode("latin-1").replace("\r\n", "\n")
+    rc, stdout, stderr = run_make(["run", "APP=shell", "RUN_SECONDS=8"], attack)
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
     created = target.exists()
     shutil.rmtree(folder)
     assert not created, "the monitor ran a command on the host"
-    assert proc.returncode == 0, proc.stderr.decode("latin-1")[-2000:]
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
     assert "error: unknown command 'cmigrate'" in out, out      # the bytes went to the shell
     assert "led = on" in out                                    # Ctrl-A x did not end QEMU
     assert len(re.findall(r"^uptime \d+\.\d{3} s", out, re.M)) == 2, out
     assert "(qemu)" not in out and "QEMU" not in out
-    banner = proc.stderr.decode("latin-1")
+    banner = stderr.decode("latin-1")
     assert "quit with Ctrl-C" in banner and "Ctrl-A" not in banner, banner
 
 
@@ -480,17 +496,12 @@ MAKE_RUN_BAD = [
 
 @pytest.mark.parametrize("option, names", MAKE_RUN_BAD, ids=[o for o, _ in MAKE_RUN_BAD])
 def test_make_run_bad_run_seconds_is_one_line_and_exit_2(option, names):
-    try:
-        p = subprocess.run(["make", "--no-print-directory", "run", "APP=shell", option],
-                           cwd=ROOT, capture_output=True, text=True, timeout=60,
-                           stdin=subprocess.DEVNULL)
-    except subprocess.TimeoutExpired:
-        pytest.fail(f"make run {option} still running after 60 s")
-    assert p.returncode == 2
-    lines = p.stderr.splitlines()
-    assert len(lines) == 1, p.stderr
+    rc, stdout, stderr = run_make(["run", "APP=shell", option], timeout=60)
+    assert rc == 2
+    lines = stderr.decode().splitlines()
+    assert len(lines) == 1, stderr
     assert f"make run: {names}" in lines[0] and "usage: make run " in lines[0], lines[0]
-    assert p.stdout == ""
+    assert stdout == b""
 
 
 def test_no_emulator_is_started_with_the_monitor_on_a_console():
@@ -517,3 +528,51 @@ def test_no_emulator_is_started_with_the_monitor_on_a_console():
     qemu_line = [ln for ln in p.stdout.splitlines() if "-M robocube -icount" in ln]
     assert len(qemu_line) == 1, p.stdout
     assert "-display none -monitor none -serial stdio" in qemu_line[0]
+
+
+def test_make_run_at_a_terminal_ends_with_ctrl_c():
+    """What the banner says: at a terminal, Ctrl-C ends the emulator and make
+    run (the stdio chardev keeps signal=on), and no emulator is left behind."""
+    master, slave = pty.openpty()
+
+    def controlling_terminal():
+        import fcntl
+        import termios
+        fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+
+    proc = subprocess.Popen(["make", "--no-print-directory", "run", "APP=shell"], cwd=ROOT,
+                            stdin=slave, stdout=slave, stderr=slave, start_new_session=True,
+                            preexec_fn=controlling_terminal)
+    os.close(slave)
+    seen = b""
+
+    def pump(seconds, marker):
+        nonlocal seen
+        deadline = time.monotonic() + seconds
+        while marker not in seen and time.monotonic() < deadline:
+            if select.select([master], [], [], 0.2)[0]:
+                try:
+                    seen += os.read(master, 4096)
+                except OSError:
+                    return
+    try:
+        pump(90, PROMPT)
+        assert PROMPT in seen, seen[-2000:]
+        assert b"quit with Ctrl-C" in seen
+        emulators = subprocess.run(["pgrep", "-s", str(proc.pid), "-f", "qemu-system-m68k"],
+                                   capture_output=True, text=True).stdout.split()
+        assert emulators, "no emulator in make run's session"
+        os.write(master, b"\x03")
+        proc.wait(timeout=20)
+        deadline = time.monotonic() + 20
+        while any(os.path.exists(f"/proc/{pid}") for pid in emulators) \
+                and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not any(os.path.exists(f"/proc/{pid}") for pid in emulators)
+    finally:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        proc.wait()
+        os.close(master)
