@@ -428,11 +428,10 @@ static void cmd_net(int argc, char **argv, const char *line)
     k_printf("net: station %u started\n", (unsigned)net_station());
 }
 
-/* exit: the board model has no power switch the firmware could turn off, so
- * exit leaves the board safe and still: every motor to 0 (open loop, which
- * also ends a speed set-point), then the CPU halts with interrupts masked
- * (board_halt: STOP #0x2700, woken by nothing on this board). The emulator
- * itself keeps running until it is ended (Ctrl-C, or make run's RUN_SECONDS). */
+/* exit: every motor to 0 first (open loop, which also ends a speed
+ * set-point), so the robot stands still whatever happens to the board, then
+ * the board switches itself off (board_power_off: LPSTOP with the interrupt
+ * mask at 7), which ends the emulated run: make run returns. */
 static void cmd_exit(int argc, char **argv, const char *line)
 {
     unsigned m;
@@ -441,7 +440,7 @@ static void cmd_exit(int argc, char **argv, const char *line)
     (void)line;
     for (m = 0; m < MOTOR_COUNT; m++)
         (void)motor_set(m, 0);
-    board_halt("shell", "exit: motors stopped, board halted (end the emulator with Ctrl-C)\n");
+    board_power_off("shell", "exit: motors stopped, board off\n");
 }
 
 static void cmd_help(int argc, char **argv, const char *line);
@@ -464,7 +463,7 @@ static const struct shell_cmd commands[] = {
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
     {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
     {"net", "[start STATION]", "radio statistics; net start N (0..15) joins the radio", 0, 2, cmd_net},
-    {"exit", "", "stop the motors and halt the board", 0, 0, cmd_exit},
+    {"exit", "", "stop the motors and switch the board off (ends make run)", 0, 0, cmd_exit},
 };
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 

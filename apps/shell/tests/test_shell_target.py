@@ -375,24 +375,45 @@ def test_bytes_above_ascii_are_not_echoed(shell):
     shell.one("led off")
 
 
-def test_exit_stops_the_motors_and_halts_the_board():
-    """On a board of its own: exit leaves every motor at 0 and the CPU halted,
-    so nothing typed afterwards is answered."""
-    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off"]) as m:
+def test_exit_stops_the_motors_and_switches_the_board_off():
+    """On a board of its own, with -no-shutdown so that the machine stays for
+    QMP after the power-off: exit leaves every motor at 0 and the board off
+    (QEMU's run state "shutdown"), and nothing typed afterwards is answered."""
+    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off",
+                                                "-no-shutdown"]) as m:
         sh = Shell(m)
         assert sh.one("motor 0 600") == "motor 0 = 600 per-mille"
         assert sh.one("speed 1 500").startswith("speed 1 = ")
         assert "exit" in sh.run("help")[-1]
+        assert m.qmp_cmd("query-status")["status"] == "running"
         m.console.write(b"exit\r")
-        out = m.console.read_until(b"halted (end the emulator with Ctrl-C)\r\n", timeout=20)
-        assert b"shell: exit: motors stopped, board halted" in out
+        out = m.console.read_until(b"board off\r\n", timeout=20)
+        assert b"shell: exit: motors stopped, board off" in out
+        deadline = time.monotonic() + 20
+        while m.qmp_cmd("query-status")["status"] != "shutdown":
+            assert time.monotonic() < deadline, m.qmp_cmd("query-status")
+            time.sleep(0.05)
         for i in range(3):
             assert m.qom_get(IO + f"/motor{i}", "direction") == 0, i
         m.console.write(b"led on\r")
-        time.sleep(1.0)
+        time.sleep(0.5)
         m.console.poll()
         assert bytes(m.console.received) == b""        # no echo, no answer, no prompt
         assert m.qom_get("/machine/sim", "led") is False
+
+
+def test_make_run_ends_when_the_shell_exits():
+    """exit switches the board off and the emulator with it: make run returns
+    0 by itself, long before any time limit, and answers nothing after exit."""
+    start = time.monotonic()
+    rc, stdout, stderr = run_make(["run", "APP=shell"], b"uptime\nexit\nled on\nuptime\n",
+                                  timeout=90)
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
+    assert re.search(r"^uptime \d+\.\d{3} s", out, re.M), out
+    assert out.endswith("shell> exit\nshell: exit: motors stopped, board off\n"), out[-500:]
+    assert "the shell's exit ends the run" in stderr.decode("latin-1")
+    assert time.monotonic() - start < 90
 
 
 def test_make_run_with_piped_stdin_ends_by_itself():
