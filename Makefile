@@ -18,6 +18,14 @@ RESULTS := $(BUILD)/results
 PYTHON := $(BUILD)/venv/bin/python
 # Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
 record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
+# $(call check_whole_number,WHO,VAR,MIN,MAX,USAGE): stops make (status 2) with one line
+# unless $(VAR) is one plain decimal integer within MIN..MAX. The digits are
+# stripped in make first, so only a string of digits ever reaches the shell.
+digits_removed = $(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(1)))))))))))
+check_whole_number = $(if $(filter-out 1,$(words $($(2))))$(call digits_removed,$($(2))),\
+    $(error $(1): $(2)='$($(2))': not a whole number (usage: $(5))),\
+    $(if $(shell [ $($(2)) -ge $(3) -a $($(2)) -le $(4) ] 2>/dev/null && echo ok),,\
+        $(error $(1): $(2)=$($(2)): out of range $(3)..$(4) (usage: $(5)))))
 
 # The compiler runtime built for the CPU32 (soft-float, 64-bit division: LLVM's
 # compiler-rt builtins, ci/setup.d/m68k.sh). Every firmware image links it instead

@@ -24,6 +24,7 @@
 #                  (board_start ... k_start); by default the image links
 #                  drivers/board_main.c, which starts the board and runs an
 #                  ordinary int main(void) as a thread
+#   NAME_QUIT      how the image itself ends a run, for make run's banner
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
 APP_DEFAULT := ecosystem
@@ -92,16 +93,34 @@ FW_ELF := $(call app_elf,$(APP))
 firmware: $(FW_ELF)
 firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 
+# make run's options, checked before anything is built: a bad value gets one
+# line naming it (make's $(error): exit status 2), never a raw error from
+# timeout or a traceback from a runner (the ecosystem's SEED and SIM_SECONDS:
+# emu/eco.mk).
 RUN_SECONDS ?=
+ifneq ($(filter run,$(MAKECMDGOALS)),)
+ifneq ($(RUN_SECONDS),)
+$(call check_whole_number,make run,RUN_SECONDS,1,86400,make run [APP=NAME] [RUN_SECONDS=1..86400])
+endif
+endif
+
+# The console is the emulator's stdio and carries bytes only, with -monitor
+# none: not QEMU's no-graphics mode, which multiplexes its monitor onto stdin
+# (Ctrl-A c there gives whoever writes to the console the monitor, and with
+# migrate "exec:..." commands on the host). The stdio chardev keeps its default signal=on, so Ctrl-C
+# typed at the terminal ends QEMU (and make run); an image can also end the
+# run itself (the shell's `exit`: apps/shell/README.md). QEMU_CONSOLE_ARGS is
+# the one place make run names the console; the shell's tests check it.
+QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
 run:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER),base)
 	@$(MAKE) --no-print-directory firmware $($(APP)_RUN_DEPS) APP=$(APP)
 ifneq ($($(APP)_RUNNER),)
 	@$($(APP)_RUNNER)
 else
-	@echo "make run: booting $(FW_ELF) on $(QEMU_M68K) -M robocube (console = DUART B on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s,; quit with Ctrl-A x))" >&2
+	@echo "make run: booting $(FW_ELF) on $(QEMU_M68K) -M robocube (console = DUART B on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s)$(if $($(APP)_QUIT),; $($(APP)_QUIT)); quit with Ctrl-C)" >&2
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
-	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) -nographic $($(APP)_RUN_ARGS); rc=$$?; \
+	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) $(QEMU_CONSOLE_ARGS) $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
 endif
 

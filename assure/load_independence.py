@@ -29,7 +29,7 @@ def run(qemu, elf, icount, until, timeout):
     """Boots the image with the console on stdio; returns (output, wall seconds)."""
     start = time.time()
     p = subprocess.Popen([qemu, '-M', 'robocube', '-icount', icount, '-kernel', elf,
-                          '-nographic', '-monitor', 'none'],
+                          '-display', 'none', '-monitor', 'none', '-serial', 'stdio'],
                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
     out = b''
     pat = re.compile(until.encode())

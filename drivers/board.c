@@ -14,6 +14,15 @@ void board_halt(const char *image, const char *why)
     cpu32_halt();
 }
 
+void board_power_off(const char *image, const char *why)
+{
+    k_console_write_sync(image, strlen(image));
+    k_console_write_sync(": ", 2u);
+    k_console_write_sync(why, strlen(why));
+    for (;;) /* a level-7 interrupt would wake it: off again */
+        __asm__ __volatile__("lpstop #0x2700" : : : "memory");
+}
+
 void board_start(const char *image)
 {
     k_init();

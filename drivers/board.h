@@ -26,6 +26,12 @@ void board_start(const char *image);
  * so it gets out even before k_start, and halts the CPU. */
 void board_halt(const char *image, const char *why) __attribute__((noreturn));
 
+/* Writes "IMAGE: WHY" like board_halt, then switches the board off: LPSTOP
+ * with the interrupt mask at 7, which on the CPU32 stops the CPU and the
+ * clocks until a level-7 interrupt or a reset. The board model takes it as
+ * the board's power-off and ends the emulation (emu/README.md). */
+void board_power_off(const char *image, const char *why) __attribute__((noreturn));
+
 /* k_thread_create that says so on the console when the thread cannot be
  * created ("cannot create thread 'NAME': error E"); the image then runs
  * without it. Returns k_thread_create's result. */

@@ -75,6 +75,8 @@ enum line_edit_result line_edit_feed(struct line_edit *e, unsigned char c, char 
         c = ' ';
     if (c < 0x20u)
         return LINE_EDIT_MORE; /* other control characters mean nothing here */
+    if (c >= 0x80u)
+        return LINE_EDIT_MORE; /* not ASCII: never stored, never echoed (see line_edit.h) */
     if (e->len + 1u >= e->size) {
         e->overflow = 1;
         return LINE_EDIT_MORE;

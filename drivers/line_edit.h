@@ -7,6 +7,12 @@
  *   Ctrl-C, Ctrl-U       discard the line typed so far (echo "^C" / "^U" and a newline)
  *   TAB                  a space
  *   other control bytes  ignored
+ *   bytes 0x80..0xFF     ignored: not stored, not echoed. Commands are ASCII;
+ *                        0x80..0x9F are the C1 controls (0x9B is CSI, 0x90 DCS,
+ *                        0x9D OSC), which a terminal would obey if echoed raw,
+ *                        and 0xA0..0xFF only ever start or continue a UTF-8
+ *                        sequence that could encode one (C2 9B), so none of
+ *                        them is echoed.
  *
  * A line longer than the buffer is refused whole: once it overflows, the
  * rest of it up to its end is swallowed (not echoed) and the line ends with

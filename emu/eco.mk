@@ -14,6 +14,14 @@ SIM_SECONDS  ?= 120
 SEED         ?= 1
 ARENA        ?=
 ECO_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) $(if $(ARENA),--arena $(ARENA)) --out $(BUILD)/run
+ECO_RUN_USAGE = make run [SIM_SECONDS=1..86400] [SEED=0..4294967295] [ARENA=FILE]
+# Checked before anything is built (the seed is the program's 32-bit seed).
+ifneq ($(filter run,$(MAKECMDGOALS)),)
+ifeq ($(or $(APP),ecosystem),ecosystem)
+$(call check_whole_number,make run,SIM_SECONDS,1,86400,$(ECO_RUN_USAGE))
+$(call check_whole_number,make run,SEED,0,4294967295,$(ECO_RUN_USAGE))
+endif
+endif
 
 CHECKS += eco
 ALL    += $(ECO_HOST_LIB)

@@ -4,14 +4,21 @@
  * also draws the major cycle as an SVG chart into FILE.
  *
  *   bsched-plan [--json] [--svg FILE] PV [PV ...]
+ *   bsched-plan --help
  *
  * Exit status 0 on success, 2 on bad input (one line on stderr, nothing on stdout).
+ * FILE is replaced only if it is a regular file (or does not exist yet); the
+ * chart is written to a new temporary file beside it and renamed over it.
  */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fchmod, fsync, lstat, umask */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
 
 #include "bsched.h"
 
@@ -24,6 +31,8 @@
 
 static struct bsched plan;
 static uint8_t pvs[BSCHED_MAX_PROCS];
+/* member_of[i]: J of process i's name pK.J, set once by number_members(). */
+static uint16_t member_of[BSCHED_MAX_PROCS];
 
 /* Bad input: one line on stderr naming the argument, exit status 2. */
 static int usage_error(const char *what, const char *arg)
@@ -34,17 +43,38 @@ static int usage_error(const char *what, const char *arg)
     return 2;
 }
 
+static void print_help(void)
+{
+    printf("usage: bsched-plan [--json] [--svg FILE] PV [PV ...]\n"
+           "Plans the processes of priority values PV (integers 0..%d, at most %d processes)\n"
+           "with bsched.c and prints the paper's Table 1 (processes, their waits) and Table 2\n"
+           "(the major cycle).\n"
+           "  --json      one JSON object instead of the tables\n"
+           "  --svg FILE  also draw the major cycle as an SVG chart into FILE (replaces FILE\n"
+           "              only if it is a regular file or does not exist)\n"
+           "  --          the arguments after it are priority values\n"
+           "  --help      this text\n"
+           "Exit status: 0 done, 2 bad input or FILE not written (one line on stderr).\n",
+           PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS);
+}
+
+/* Numbers the members of each class in input order, in one pass (a running
+ * count per priority value), so that naming a process costs O(1): Table 2
+ * names every process of every minor cycle, and counting a process's earlier
+ * class members at each name made 16,000 processes take a minute. */
+static void number_members(void)
+{
+    uint16_t seen[BSCHED_MAX_PV + 1] = {0};
+    uint16_t i;
+    for (i = 0; i < plan.count; i++) {
+        member_of[i] = ++seen[plan.pv[i]];
+    }
+}
+
 /* Name of process i as in the paper: pK.J = member J (from 1) of class K. */
 static void process_name(char *out, size_t size, uint16_t i)
 {
-    unsigned member = 1;
-    uint16_t j;
-    for (j = 0; j < i; j++) {
-        if (plan.pv[j] == plan.pv[i]) {
-            member++;
-        }
-    }
-    snprintf(out, size, "p%u.%u", (unsigned)plan.pv[i], member);
+    snprintf(out, size, "p%u.%u", (unsigned)plan.pv[i], (unsigned)member_of[i]);
 }
 
 /* U = sum 2^-pv, as a double for printing (exact for these magnitudes). */
@@ -225,6 +255,83 @@ static int write_svg(FILE *out)
     return ferror(out) ? -1 : 0;
 }
 
+/* One line on stderr for a chart that was not written; the target is untouched. */
+static int svg_error(const char *path, const char *why)
+{
+    fprintf(stderr, "bsched-plan: cannot write '%s': %s\n", path, why);
+    return 2;
+}
+
+/*
+ * Writes the chart to path. Only a regular file is ever replaced: anything
+ * else there (a symbolic link, a device such as /dev/null, a FIFO, a folder)
+ * is refused and left as it is. The chart goes to a temporary file that
+ * mkstemp creates exclusively (O_EXCL: it follows no link planted under its
+ * name) in path's folder, so the final rename stays on one file system and
+ * replaces path whole or not at all; a failed run leaves no partial chart.
+ */
+static int write_svg_file(const char *path)
+{
+    static char tmp[PATH_MAX + 16];
+    const char *slash = strrchr(path, '/');
+    size_t dir_len = slash != NULL ? (size_t)(slash - path) + 1u : 0u;
+    struct stat st;
+    FILE *out;
+    int fd, failed, saved;
+    mode_t mask;
+
+    if (path[strlen(path) - 1u] == '/') {
+        return svg_error(path, "names a folder, not a file");
+    }
+    if (lstat(path, &st) == 0) {
+        if (!S_ISREG(st.st_mode)) {
+            return svg_error(path, S_ISLNK(st.st_mode) ? "it is a symbolic link; refusing to replace it"
+                                                       : "not a regular file; refusing to replace it");
+        }
+    } else if (errno != ENOENT) {
+        return svg_error(path, strerror(errno));
+    }
+    if (dir_len + sizeof ".bsched-plan-XXXXXX" > sizeof tmp) {
+        return svg_error(path, "file name too long");
+    }
+    memcpy(tmp, path, dir_len);
+    memcpy(tmp + dir_len, ".bsched-plan-XXXXXX", sizeof ".bsched-plan-XXXXXX");
+    fd = mkstemp(tmp);
+    if (fd < 0) {
+        return svg_error(path, strerror(errno));
+    }
+    /* mkstemp makes the file 0600; give the chart the mode a new file gets. */
+    mask = umask(0);
+    (void)umask(mask);
+    (void)fchmod(fd, (mode_t)(0666 & ~mask));
+    out = fdopen(fd, "w");
+    if (out == NULL) {
+        saved = errno;
+        close(fd);
+        unlink(tmp);
+        return svg_error(path, strerror(saved));
+    }
+    failed = write_svg(out);
+    failed |= fflush(out) != 0;
+    saved = errno;
+    failed |= fclose(out) != 0;
+    if (failed) {
+        unlink(tmp);
+        return svg_error(path, strerror(saved != 0 ? saved : EIO));
+    }
+    /* Looked at again just before the rename: something may have appeared there meanwhile. */
+    if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        unlink(tmp);
+        return svg_error(path, "not a regular file any more; refusing to replace it");
+    }
+    if (rename(tmp, path) != 0) {
+        saved = errno;
+        unlink(tmp);
+        return svg_error(path, strerror(saved));
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int json = 0;
@@ -239,6 +346,10 @@ int main(int argc, char **argv)
         const char *arg = argv[a];
         char *end;
         long value;
+        if (!options_done && (strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0)) {
+            print_help();
+            return fflush(stdout) == 0 ? 0 : 1;
+        }
         if (!options_done && strcmp(arg, "--json") == 0) {
             json = 1;
             continue;
@@ -289,24 +400,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "bsched-plan: bsched_init failed with code %ld\n", (long)rc);
         return 2;
     }
+    number_members();
     if (svg != NULL) {
-        /* Written to a temporary name and renamed, so a failed run leaves no partial chart. */
-        char tmp[4096];
-        FILE *out;
-        int failed;
-        if (snprintf(tmp, sizeof tmp, "%s.tmp", svg) >= (int)sizeof tmp) {
-            return usage_error("--svg file name too long:", svg);
-        }
-        out = fopen(tmp, "w");
-        if (out == NULL) {
-            fprintf(stderr, "bsched-plan: cannot write '%s': %s\n", svg, strerror(errno));
-            return 2;
-        }
-        failed = write_svg(out);
-        failed |= fclose(out) != 0;
-        if (failed || rename(tmp, svg) != 0) {
-            fprintf(stderr, "bsched-plan: cannot write '%s': %s\n", svg, strerror(errno));
-            remove(tmp);
+        if (write_svg_file(svg) != 0) {
             return 2;
         }
         (void)bsched_init(&plan, pvs, count); /* back to cycle 0 for the listing */

@@ -4,6 +4,8 @@
 # a host core and uptime 18 s after 5 s; README.md), so make run uses sleep=on. The
 # tests (apps/shell/tests/) run QEMU themselves with sleep=off (deterministic).
 shell_ICOUNT := shift=8,sleep=on
+# For make run's banner: exit stops the motors and switches the board off (README.md).
+shell_QUIT   := the shell's exit ends the run
 
 # Target tests: the shell on the emulated board, every command checked over
 # QMP against the board model, plus `make run APP=shell` with piped stdin.

@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
+#include "drivers/board.h"
 #include "drivers/console_in.h"
 #include "drivers/drv_err.h"
 #include "drivers/i2c.h"
@@ -402,8 +403,16 @@ static void cmd_net(int argc, char **argv, const char *line)
         reply_error("net: unknown subcommand '%s' (try net, or net start STATION)", argv[1]);
         return;
     }
-    if (!parse_int(argv[2], &station) || station < 0 || station > 255) {
-        reply_error("net: '%s': station 0..255", argv[2]);
+    /* The link layer's station numbers, checked here so that a number out
+     * of range is named with the range instead of net_init's bare code. */
+    if (!parse_int(argv[2], &station)) {
+        reply_error("net: '%s' is not a station number (0..%u)", argv[2],
+                    (unsigned)LINK_MAX_STATIONS - 1u);
+        return;
+    }
+    if (station < 0 || station > (int32_t)LINK_MAX_STATIONS - 1) {
+        reply_error("net: station %ld out of range 0..%u", (long)station,
+                    (unsigned)LINK_MAX_STATIONS - 1u);
         return;
     }
     if (started) {
@@ -417,6 +426,21 @@ static void cmd_net(int argc, char **argv, const char *line)
     }
     started = 1;
     k_printf("net: station %u started\n", (unsigned)net_station());
+}
+
+/* exit: every motor to 0 first (open loop, which also ends a speed
+ * set-point), so the robot stands still whatever happens to the board, then
+ * the board switches itself off (board_power_off: LPSTOP with the interrupt
+ * mask at 7), which ends the emulated run: make run returns. */
+static void cmd_exit(int argc, char **argv, const char *line)
+{
+    unsigned m;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    for (m = 0; m < MOTOR_COUNT; m++)
+        (void)motor_set(m, 0);
+    board_power_off("shell", "exit: motors stopped, board off\n");
 }
 
 static void cmd_help(int argc, char **argv, const char *line);
@@ -438,7 +462,8 @@ static const struct shell_cmd commands[] = {
     {"sleep", "MS", "wait MS milliseconds (0..60000), for scripts", 1, 1, cmd_sleep},
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
     {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
-    {"net", "[start STATION]", "radio statistics; net start N joins the radio as station N", 0, 2, cmd_net},
+    {"net", "[start STATION]", "radio statistics; net start N (0..15) joins the radio", 0, 2, cmd_net},
+    {"exit", "", "stop the motors and switch the board off (ends make run)", 0, 0, cmd_exit},
 };
 #define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 

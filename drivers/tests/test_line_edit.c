@@ -108,6 +108,33 @@ static void test_cancel_and_control_characters(void **state)
     assert_string_equal(buf, "ok");
 }
 
+/* Bytes 0x80..0xFF are neither stored nor echoed: echoed raw, the C1 controls
+ * (0x9B CSI, 0x90 DCS, 0x9D OSC, ...) would be obeyed by the terminal. */
+static void test_bytes_above_ascii_are_ignored_and_never_echoed(void **state)
+{
+    char line[16];
+    unsigned c;
+    (void)state;
+    for (c = 0x80u; c <= 0xFFu; c++) {
+        line[0] = 'a';
+        line[1] = (char)c;
+        line[2] = 'b';
+        line[3] = '\n';
+        echoed_len = 0;
+        echoed[0] = '\0';
+        assert_string_equal(feed(line, 4), "...D");
+        assert_string_equal(buf, "ab");
+        assert_int_equal(echoed_len, 3);
+        assert_memory_equal(echoed, "ab\n", 3);
+    }
+    /* a CSI sequence that would clear the screen, and its UTF-8 form */
+    echoed_len = 0;
+    assert_string_equal(FEED("\x9b" "2J\xc2\x9b" "2J\n"), ".......D");
+    assert_string_equal(buf, "2J2J");
+    assert_memory_equal(echoed, "2J2J\n", 5);
+    assert_int_equal(echoed_len, 5);
+}
+
 static void test_tiny_buffer(void **state)
 {
     char one[1];
@@ -126,6 +153,7 @@ int main(void)
         T(test_backspace_and_delete),
         T(test_overlong_line_is_refused_whole),
         T(test_cancel_and_control_characters),
+        T(test_bytes_above_ascii_are_ignored_and_never_echoed),
         T(test_tiny_buffer),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -231,6 +231,28 @@ def test_double_bus_fault_halts_cpu_not_qemu(build_elf):
         assert b"BERR" not in m.console.received
 
 
+def test_lpstop_with_mask_7_switches_the_board_off(build_elf):
+    # CPU32 LPSTOP (F800 01C0 #imm) with the interrupt mask at 7: the board
+    # model's power-off (board_power_off, the shell's exit): QEMU ends, status 0.
+    with run(build_elf, "lpstop #0x2700") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        assert m.proc.wait(timeout=20) == 0
+        m.console.poll()
+        assert b"AFTER" not in m.console.received
+
+
+def test_lpstop_below_mask_7_sleeps_like_stop(build_elf):
+    # Mask 6 (nothing pending in this program): the CPU sleeps, the machine
+    # runs on; LPSTOP is no longer an unimplemented line-F instruction.
+    with run(build_elf, "lpstop #0x2600") as m:
+        m.console.read_until(b"HELLO\r\n", timeout=10)
+        time.sleep(1.0)
+        assert m.proc.poll() is None
+        assert m.qmp_cmd("query-status")["status"] == "running"
+        m.console.poll()
+        assert b"AFTER" not in m.console.received and b"ILL" not in m.console.received
+
+
 def test_pit_interrupts_acknowledged_by_cpu(build_elf):
     """PIT at level 4 / vector 64, 1024 Hz, under -icount (deterministic
     virtual time whatever the host load): the handler counts its entries in

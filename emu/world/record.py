@@ -25,7 +25,11 @@ class Recorder:
         w = self.world
         self.sha.update(struct.pack("<qdddd", t_ns, w.x, w.y, w.th, w.soc))
         if self.trace:
-            self.trace.write(f"{t_ns} {w.x!r} {w.y!r} {w.th!r} {w.soc!r}\n")
+            # float(): after a collision the pose may be a numpy float64, whose
+            # repr is "np.float64(...)"; a Python float's repr is the plain
+            # shortest decimal that reads back to the same double.
+            self.trace.write(f"{t_ns} {float(w.x)!r} {float(w.y)!r} {float(w.th)!r} "
+                             f"{float(w.soc)!r}\n")
         if self.n % self.every == 0:
             self.t.append(w.t)
             self.x.append(w.x)

@@ -8,6 +8,7 @@ bad input, 1 when the emulator or the program failed."""
 
 import argparse
 import json
+import math
 import os
 import sys
 import time
@@ -23,25 +24,66 @@ DEFAULT_ARENA = os.path.join(HERE, "arenas", "default.json")
 STEP_MS = 7.8125
 
 
+MAX_SECONDS = 86400.0          # a virtual day
+MAX_SEED = 2**32 - 1           # the robot program's seed is 32 bits (hostmode.py)
+
+
+class OneLineParser(argparse.ArgumentParser):
+    """Bad options: one line on stderr naming the problem and the usage, exit 2
+    (argparse's own form is a usage block and a second line)."""
+
+    def error(self, message):
+        usage = " ".join(self.format_usage().split())
+        self.exit(2, f"{self.prog}: {message} ({usage})\n")
+
+
+def _seconds(text):
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number of seconds") from None
+    if not (math.isfinite(v) and 0 < v <= MAX_SECONDS):
+        raise argparse.ArgumentTypeError(f"{text}: out of range (0, {MAX_SECONDS:g}]")
+    return v
+
+
+def _seed(text):
+    try:
+        v = int(text, 10)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+    if not 0 <= v <= MAX_SEED:
+        raise argparse.ArgumentTypeError(f"{text}: out of range 0..{MAX_SEED}")
+    return v
+
+
+def _step_ms(text):
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number of milliseconds") from None
+    if not 0.1 <= v <= 1000:
+        raise argparse.ArgumentTypeError(f"{text}: out of range 0.1 .. 1000")
+    return v
+
+
 def parse_args(argv):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--seconds", type=float, default=120.0, help="virtual seconds (default 120)")
-    ap.add_argument("--seed", type=int, default=1, help="sensor-noise seed (default 1)")
-    ap.add_argument("--arena", default=DEFAULT_ARENA, help="arena file (JSON)")
+    ap = OneLineParser(prog="run.py", description=__doc__.split("\n")[0])
+    ap.add_argument("--seconds", type=_seconds, default=120.0,
+                    help=f"virtual seconds, up to {MAX_SECONDS:g} (default 120)")
+    ap.add_argument("--seed", type=_seed, default=1,
+                    help=f"sensor-noise seed 0..{MAX_SEED} (default 1)")
+    ap.add_argument("--arena", default=DEFAULT_ARENA, help="arena file (JSON, arena.schema.json)")
     ap.add_argument("--host", action="store_true", help="fast mode: the program on the host")
     ap.add_argument("--elf", help="firmware image (emulated mode)")
     ap.add_argument("--qemu", default=os.environ.get("BSCHED_QEMU"), help="qemu-system-m68k")
     ap.add_argument("--host-lib", help="libeco_host.so (fast mode)")
-    ap.add_argument("--step-ms", type=float, default=STEP_MS,
+    ap.add_argument("--step-ms", type=_step_ms, default=STEP_MS,
                     help=f"lockstep step (default {STEP_MS} ms: one kernel tick, see cosim.py)")
     ap.add_argument("--out", default="build/run", help="folder for ecosystem.png and summary.json")
     ap.add_argument("--view", choices=("auto", "live", "plain", "none"), default="auto")
     ap.add_argument("--trace", help="write every step's pose (t_ns x y th soc) to this file")
     a = ap.parse_args(argv)
-    if not a.seconds > 0:
-        ap.error("--seconds must be positive")
-    if not 0.1 <= a.step_ms <= 1000:
-        ap.error("--step-ms must be within 0.1 .. 1000")
     if a.host and not a.host_lib:
         ap.error("--host needs --host-lib")
     if not a.host and not (a.elf and a.qemu):
@@ -60,7 +102,12 @@ def main(argv=None):
         print(f"run.py: {e}", file=sys.stderr)
         return 2
     world = World(arena, a.seed)
-    trace = open(a.trace, "w") if a.trace else None
+    try:
+        trace = open(a.trace, "w") if a.trace else None
+        os.makedirs(a.out, exist_ok=True)
+    except OSError as e:
+        print(f"run.py: {e.filename}: {e.strerror}", file=sys.stderr)
+        return 2
     rec = Recorder(world, trace=trace)
     mode = "host fast mode" if a.host else "emulated RoboCube, lockstep"
     view = a.view
@@ -109,9 +156,7 @@ def main(argv=None):
     s.update({"mode": "host" if a.host else "emulated", "seed": a.seed, "arena": a.arena,
               "wall_s": round(wall, 2), "real_time_factor": round(world.t / wall, 2) if wall else None,
               "program_status_lines": rec.status_lines})
-    os.makedirs(a.out, exist_ok=True)
     png = os.path.join(a.out, "ecosystem.png")
-    save_picture(rec, png, title)
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(s, f, indent=1)
     for line in console_lines[:20]:
@@ -122,10 +167,16 @@ def main(argv=None):
                     if "icount sleep disabled and no active timers" not in ln)
     if err.strip():
         print("emulator stderr:\n" + err.strip(), file=sys.stderr, flush=True)
+    # The summary and the digest first: drawing is the last thing that can fail.
     print("\n".join(summary_lines(s, mode)))
     print(f"  wall time:       {wall:.1f} s ({s['real_time_factor']}x real time)")
+    print(f"trajectory sha256: {s['trajectory_sha256']}", flush=True)
+    try:
+        save_picture(rec, png, title)
+    except Exception as e:                   # matplotlib, the disk: the run itself is kept
+        print(f"run.py: picture not drawn: {type(e).__name__}: {e}", file=sys.stderr)
+        return 1
     print(f"picture: {os.path.abspath(png)}")
-    print(f"trajectory sha256: {s['trajectory_sha256']}")
     return 0
 
 

@@ -15,6 +15,7 @@ inputs, as wired in the arena file's "wiring" section.
 
 import json
 import math
+import os
 
 import numpy as np
 
@@ -23,30 +24,63 @@ class ArenaError(ValueError):
     pass
 
 
-def _need(d, key, where):
-    if key not in d:
-        raise ArenaError(f"{where}: missing '{key}'")
-    return d[key]
+SCHEMA_PATH = os.path.join(os.path.dirname(os.path.abspath(__file__)), "arena.schema.json")
+
+
+def _schema_validator():
+    import jsonschema
+    with open(SCHEMA_PATH) as f:
+        schema = json.load(f)
+    cls = jsonschema.validators.validator_for(schema)
+    cls.check_schema(schema)
+    return cls(schema)
+
+
+def _finite(text):
+    """json's parse_float: a number too large for a double reads as inf, which
+    no arena quantity may be."""
+    v = float(text)
+    if not math.isfinite(v):
+        raise ValueError(f"{text} is too large for a number")
+    return v
+
+
+def _no_constant(name):
+    raise ValueError(f"{name} is not a number")
+
+
+def _where(error):
+    return "/".join(str(p) for p in error.absolute_path) or "the top level"
 
 
 def load_arena(path):
-    """Reads and checks an arena file (JSON); raises ArenaError naming the problem."""
+    """Reads and checks an arena file (JSON) against arena.schema.json, then
+    what a schema cannot say (the robot starts inside the pen, segments and
+    boxes are not degenerate); raises ArenaError with one line naming the
+    first problem."""
     try:
         with open(path) as f:
-            a = json.load(f)
+            a = json.load(f, parse_float=_finite, parse_constant=_no_constant)
     except OSError as e:
         raise ArenaError(f"{path}: {e.strerror}") from None
     except json.JSONDecodeError as e:
         raise ArenaError(f"{path}: not valid JSON ({e})") from None
-    w, h = _need(a, "size", path)
-    if not (w > 0 and h > 0):
-        raise ArenaError(f"{path}: size must be positive")
-    for key in ("station", "robot", "wiring"):
-        _need(a, key, path)
+    except (ValueError, RecursionError) as e:       # NaN, Infinity, 1e999, nesting
+        raise ArenaError(f"{path}: not valid JSON ({e})") from None
+    import jsonschema
+    error = jsonschema.exceptions.best_match(_schema_validator().iter_errors(a))
+    if error is not None:
+        raise ArenaError(f"{path}: {_where(error)}: {error.message}")
+    w, h = a["size"]
+    for i, (x0, y0, x1, y1) in enumerate(a.get("walls", [])):
+        if x0 == x1 and y0 == y1:
+            raise ArenaError(f"{path}: walls/{i}: a wall of zero length")
     for i, o in enumerate(a.get("obstacles", [])):
-        if not ("circle" in o or "box" in o):
-            raise ArenaError(f"{path}: obstacle {i} is neither a circle nor a box")
-    x, y, _ = _need(a["robot"], "start", path + " robot")
+        if "box" in o:
+            x0, y0, x1, y1 = o["box"]
+            if not (x0 < x1 and y0 < y1):
+                raise ArenaError(f"{path}: obstacles/{i}/box: needs x0 < x1 and y0 < y1")
+    x, y, _ = a["robot"]["start"]
     r = a["robot"]["radius"]
     if not (r < x < w - r and r < y < h - r):
         raise ArenaError(f"{path}: the robot's start is not inside the arena")

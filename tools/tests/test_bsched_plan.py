@@ -195,3 +195,103 @@ def test_svg_unwritable_file_is_an_error_and_writes_nothing(tmp_path):
     assert r.stdout == ""
     assert "cannot write" in r.stderr
     assert not target.exists()
+
+
+# ---------- --svg FILE never replaces anything but a regular file ----------
+
+def leftovers(folder):
+    return sorted(p.name for p in folder.iterdir() if p.name.startswith(".bsched-plan-"))
+
+
+def test_svg_follows_no_link_planted_at_a_temporary_name(tmp_path):
+    # A fixed temporary name (FILE.tmp) opened with fopen("w") would follow a
+    # link planted there and write the chart into whatever it points to.
+    victim = tmp_path / "victim"
+    victim.write_text("keep me\n")
+    target = tmp_path / "plan.svg"
+    (tmp_path / "plan.svg.tmp").symlink_to(victim)
+    r = run("--svg", str(target), "1", "2")
+    assert r.returncode == 0, r.stderr
+    assert victim.read_text() == "keep me\n"
+    assert (tmp_path / "plan.svg.tmp").is_symlink()
+    assert ET.parse(target).getroot().tag == SVG_NS + "svg"
+    assert not target.is_symlink()
+    assert leftovers(tmp_path) == []
+
+
+@pytest.mark.parametrize("kind", ["symlink", "fifo", "folder", "dangling symlink"])
+def test_svg_refuses_to_replace_what_is_not_a_regular_file(tmp_path, kind):
+    victim = tmp_path / "victim"
+    victim.write_text("keep me\n")
+    target = tmp_path / "plan.svg"
+    if kind == "symlink":
+        target.symlink_to(victim)
+    elif kind == "dangling symlink":
+        target.symlink_to(tmp_path / "nowhere")
+    elif kind == "fifo":
+        os.mkfifo(target)
+    else:
+        target.mkdir()
+    before = os.lstat(target)
+    r = run("--svg", str(target), "1", "2")
+    assert r.returncode == 2
+    assert r.stdout == ""
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"bsched-plan: cannot write '{target}': ")
+    assert "refusing to replace" in lines[0]
+    after = os.lstat(target)
+    assert (after.st_ino, after.st_mode) == (before.st_ino, before.st_mode)
+    assert victim.read_text() == "keep me\n"
+    assert not (tmp_path / "nowhere").exists()
+    assert leftovers(tmp_path) == []
+
+
+def test_svg_replaces_a_regular_file_whole(tmp_path):
+    target = tmp_path / "plan.svg"
+    target.write_text("old chart\n")
+    root, _ = svg_of(tmp_path, *TABLE1_PV)
+    assert marks(root)[0] == TABLE2[0]
+    assert leftovers(tmp_path) == []
+    assert os.stat(target).st_mode & 0o777 == 0o666 & ~current_umask()
+
+
+def current_umask():
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def test_help_prints_usage_and_exits_0():
+    for flag in ("--help", "-h"):
+        r = run(flag)
+        assert r.returncode == 0, r.stderr
+        assert r.stderr == ""
+        assert r.stdout.startswith("usage: bsched-plan [--json] [--svg FILE] PV [PV ...]")
+        assert "--svg FILE" in r.stdout and "--json" in r.stdout
+
+
+def test_text_tables_of_16000_processes_take_linear_time(tmp_path):
+    # Table 2 names every process of every minor cycle; naming one must not
+    # cost a walk over the processes before it (that took 57 s of CPU here).
+    import resource
+    pv = [str(i % 12) for i in range(16000)]
+    out = tmp_path / "tables.txt"
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    with open(out, "w") as f:
+        try:
+            r = subprocess.run([PLAN, *pv], stdout=f, stderr=subprocess.PIPE, text=True, timeout=60)
+        except subprocess.TimeoutExpired:
+            pytest.fail("16000 processes: no Table 2 in 60 s")
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    assert r.returncode == 0, r.stderr
+    assert cpu < 8.0, f"{cpu:.1f} s of CPU"
+    lines = out.read_text().splitlines()
+    out.unlink()
+    table1 = [ln.split() for ln in lines[2:16002]]
+    assert table1[0][:2] == ["p0.1", "0"] and table1[-1][:2] == ["p3.1334", "3"]
+    cycles = [ln for ln in lines if ln[:1].isdigit()]
+    assert len(cycles) == 2048
+    # cycle 0 runs every process whose wait is 0: class 0's 1334 members among them
+    first = cycles[0].split(None, 1)[1].split(", ")
+    assert [n for n in first if n.startswith("p0.")] == [f"p0.{j}" for j in range(1, 1335)]

@@ -10,8 +10,13 @@ leaves the shell at its prompt. Environment (set by make check-shell-target):
   SHELL_ELF     build/firmware/shell/shell.elf
 """
 import os
+import pty
 import re
+import select
+import shutil
+import signal
 import subprocess
+import tempfile
 import time
 from pathlib import Path
 
@@ -24,6 +29,22 @@ ELF = Path(os.environ.get("SHELL_ELF", ROOT / "build" / "firmware" / "shell" / "
 IO = "/machine/robocube-io"
 PROMPT = b"shell> "
 LINE_MAX = 80          # SHELL_LINE_MAX in apps/shell/shell.h
+
+
+def run_make(args, stdin=b"", timeout=120):
+    """make ARGS in the tree with stdin, in a session of its own: on a timeout
+    the whole group (make, its shell, timeout, QEMU) is killed, not make alone,
+    so no emulator outlives the test. Returns (returncode, stdout, stderr)."""
+    proc = subprocess.Popen(["make", "--no-print-directory", *args], cwd=ROOT,
+                            stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, start_new_session=True)
+    try:
+        out, err = proc.communicate(stdin, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        pytest.fail(f"make {' '.join(args)} still running after {timeout} s")
+    return proc.returncode, out, err
 
 
 class Shell:
@@ -342,16 +363,68 @@ def test_many_lines_at_once_lose_nothing(shell):
     assert int(m.group(5)) == 0 and int(m.group(6)) == 0
 
 
+def test_bytes_above_ascii_are_not_echoed(shell):
+    """C1 controls (0x9B CSI, 0x90 DCS, ...) and every other byte above 0x7F are
+    dropped by the line editor: never echoed to the terminal, never in a command."""
+    shell.one("led off")
+    shell.m.console.write(b"le\x9bd \x90\xc2\x9bo\x9dn\xff\r")
+    out = shell.m.console.read_until(PROMPT)
+    assert all(b < 0x80 for b in out), out
+    assert b"led on" in out and b"led = on" in out
+    assert shell.qget("/machine/sim", "led") is True
+    shell.one("led off")
+
+
+def test_exit_stops_the_motors_and_switches_the_board_off():
+    """On a board of its own, with -no-shutdown so that the machine stays for
+    QMP after the power-off: exit leaves every motor at 0 and the board off
+    (QEMU's run state "shutdown"), and nothing typed afterwards is answered."""
+    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off",
+                                                "-no-shutdown"]) as m:
+        sh = Shell(m)
+        assert sh.one("motor 0 600") == "motor 0 = 600 per-mille"
+        assert sh.one("speed 1 500").startswith("speed 1 = ")
+        assert "exit" in sh.run("help")[-1]
+        assert m.qmp_cmd("query-status")["status"] == "running"
+        m.console.write(b"exit\r")
+        out = m.console.read_until(b"board off\r\n", timeout=20)
+        assert b"shell: exit: motors stopped, board off" in out
+        deadline = time.monotonic() + 20
+        while m.qmp_cmd("query-status")["status"] != "shutdown":
+            assert time.monotonic() < deadline, m.qmp_cmd("query-status")
+            time.sleep(0.05)
+        for i in range(3):
+            assert m.qom_get(IO + f"/motor{i}", "direction") == 0, i
+        m.console.write(b"led on\r")
+        time.sleep(0.5)
+        m.console.poll()
+        assert bytes(m.console.received) == b""        # no echo, no answer, no prompt
+        assert m.qom_get("/machine/sim", "led") is False
+
+
+def test_make_run_ends_when_the_shell_exits():
+    """exit switches the board off and the emulator with it: make run returns
+    0 by itself, long before any time limit, and answers nothing after exit."""
+    start = time.monotonic()
+    rc, stdout, stderr = run_make(["run", "APP=shell"], b"uptime\nexit\nled on\nuptime\n",
+                                  timeout=90)
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
+    assert re.search(r"^uptime \d+\.\d{3} s", out, re.M), out
+    assert out.endswith("shell> exit\nshell: exit: motors stopped, board off\n"), out[-500:]
+    assert "the shell's exit ends the run" in stderr.decode("latin-1")
+    assert time.monotonic() - start < 90
+
+
 def test_make_run_with_piped_stdin_ends_by_itself():
     """printf 'help\\nuptime\\n' | make run APP=shell RUN_SECONDS=N: the commands
     are answered from stdin and the run stops at the time limit."""
     start = time.monotonic()
-    proc = subprocess.run(
-        ["make", "--no-print-directory", "run", "APP=shell", "RUN_SECONDS=5"],
-        cwd=ROOT, input=b"help\nuptime\nled on\n", capture_output=True, timeout=120)
+    rc, stdout, stderr = run_make(["run", "APP=shell", "RUN_SECONDS=5"],
+                                  b"help\nuptime\nled on\n")
     elapsed = time.monotonic() - start
-    out = proc.stdout.decode("latin-1").replace("\r\n", "\n")
-    assert proc.returncode == 0, proc.stderr.decode("latin-1")[-2000:]
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
     assert "shell> help\n" in out
     assert "  i2c scan" in out
     assert re.search(r"shell> uptime\nuptime \d+\.\d{3} s", out), out
@@ -392,6 +465,12 @@ def test_net_statistics_and_start(shell):
     assert shell.one("net") == "net: not started (net start STATION)"
     for bad in ("net bogus", "net start", "net start 256", "net start x", "net start 1 2"):
         shell.error(bad)
+    # the link layer's stations are 0..15: the range is named, no bare error code
+    for bad in ("16", "255", "-1", "99999999999"):
+        answer = shell.error(f"net start {bad}")
+        assert "0..15" in answer and "(-" not in answer, answer
+    assert shell.error("net start 16") == "error: net: station 16 out of range 0..15"
+    assert shell.one("net") == "net: not started (net start STATION)"
     assert shell.one("net start 2") == "net: station 2 started"
     stats = shell.run("net")
     assert stats[0] == "net: station 2"
@@ -399,3 +478,122 @@ def test_net_statistics_and_start(shell):
     assert re.match(r"  retransmissions \d+, collisions \d+, deferrals \d+, mac drops \d+$", stats[2])
     assert stats[3].startswith("  messages delivered 0, duplicates dropped 0, unreachable 0")
     assert "already started" in shell.error("net start 3")
+
+
+def test_make_run_console_carries_bytes_only():
+    """The console of make run is the emulator's stdio and nothing else: Ctrl-A
+    c used to open QEMU's monitor (-nographic multiplexes it onto stdin), and
+    its migrate "exec:..." ran a command on the host; Ctrl-A x ended QEMU.
+    Now those bytes reach the shell like any others."""
+    # a short folder: the monitor command must fit the shell's 80-character line,
+    # so that the shell's answer to it shows that it arrived whole
+    folder = Path(tempfile.mkdtemp(prefix="bsched-"))
+    target = folder / "pwned"
+    attack = (b"uptime\n\x01cmigrate \"exec:id > " + str(target).encode() + b"\"\n"
+              b"\x01c\x01x\nled on\nuptime\n")
+    rc, stdout, stderr = run_make(["run", "APP=shell", "RUN_SECONDS=8"], attack)
+    out = stdout.decode("latin-1").replace("\r\n", "\n")
+    created = target.exists()
+    shutil.rmtree(folder)
+    assert not created, "the monitor ran a command on the host"
+    assert rc == 0, stderr.decode("latin-1")[-2000:]
+    assert "error: unknown command 'cmigrate'" in out, out      # the bytes went to the shell
+    assert "led = on" in out                                    # Ctrl-A x did not end QEMU
+    assert len(re.findall(r"^uptime \d+\.\d{3} s", out, re.M)) == 2, out
+    assert "(qemu)" not in out and "QEMU" not in out
+    banner = stderr.decode("latin-1")
+    assert "quit with Ctrl-C" in banner and "Ctrl-A" not in banner, banner
+
+
+MAKE_RUN_BAD = [
+    ("RUN_SECONDS=0", "RUN_SECONDS=0: out of range 1..86400"),
+    ("RUN_SECONDS=abc", "RUN_SECONDS='abc': not a whole number"),
+    ("RUN_SECONDS=-3", "RUN_SECONDS='-3': not a whole number"),
+    ("RUN_SECONDS=2.5", "RUN_SECONDS='2.5': not a whole number"),
+    ("RUN_SECONDS=1 2", "RUN_SECONDS='1 2': not a whole number"),
+    ("RUN_SECONDS=100000", "RUN_SECONDS=100000: out of range 1..86400"),
+]
+
+
+@pytest.mark.parametrize("option, names", MAKE_RUN_BAD, ids=[o for o, _ in MAKE_RUN_BAD])
+def test_make_run_bad_run_seconds_is_one_line_and_exit_2(option, names):
+    rc, stdout, stderr = run_make(["run", "APP=shell", option], timeout=60)
+    assert rc == 2
+    lines = stderr.decode().splitlines()
+    assert len(lines) == 1, stderr
+    assert f"make run: {names}" in lines[0] and "usage: make run " in lines[0], lines[0]
+    assert stdout == b""
+
+
+def test_no_emulator_is_started_with_the_monitor_on_a_console():
+    """Every place that starts QEMU (make run, the runners, the tests, the
+    tools): no -nographic, no mon:stdio, no muxed chardev, and make run's
+    console arguments are -display none -monitor none -serial stdio."""
+    here = Path(__file__).resolve()
+    bad = []
+    for path in ROOT.rglob("*"):
+        if (path.suffix not in (".py", ".mk", ".sh") and path.name != "Makefile") \
+                or "build" in path.relative_to(ROOT).parts or path == here \
+                or not path.is_file():
+            continue
+        text = path.read_text(errors="replace")
+        for needle in ("-nographic", "mon:stdio", "mux=on"):
+            if needle in text:
+                bad.append(f"{path.relative_to(ROOT)}: {needle}")
+    assert bad == []
+    apps_mk = (ROOT / "apps" / "apps.mk").read_text()
+    assert "QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio" in apps_mk
+    p = subprocess.run(["make", "--no-print-directory", "-n", "run", "APP=shell"], cwd=ROOT,
+                       capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL,
+                       env=dict(os.environ, MAKEFLAGS=""))
+    qemu_line = [ln for ln in p.stdout.splitlines() if "-M robocube -icount" in ln]
+    assert len(qemu_line) == 1, p.stdout
+    assert "-display none -monitor none -serial stdio" in qemu_line[0]
+
+
+def test_make_run_at_a_terminal_ends_with_ctrl_c():
+    """What the banner says: at a terminal, Ctrl-C ends the emulator and make
+    run (the stdio chardev keeps signal=on), and no emulator is left behind."""
+    master, slave = pty.openpty()
+
+    def controlling_terminal():
+        import fcntl
+        import termios
+        fcntl.ioctl(0, termios.TIOCSCTTY, 0)
+
+    proc = subprocess.Popen(["make", "--no-print-directory", "run", "APP=shell"], cwd=ROOT,
+                            stdin=slave, stdout=slave, stderr=slave, start_new_session=True,
+                            preexec_fn=controlling_terminal)
+    os.close(slave)
+    seen = b""
+
+    def pump(seconds, marker):
+        nonlocal seen
+        deadline = time.monotonic() + seconds
+        while marker not in seen and time.monotonic() < deadline:
+            if select.select([master], [], [], 0.2)[0]:
+                try:
+                    seen += os.read(master, 4096)
+                except OSError:
+                    return
+    try:
+        pump(90, PROMPT)
+        assert PROMPT in seen, seen[-2000:]
+        assert b"quit with Ctrl-C" in seen
+        emulators = subprocess.run(["pgrep", "-s", str(proc.pid), "-f", "qemu-system-m68k"],
+                                   capture_output=True, text=True).stdout.split()
+        assert emulators, "no emulator in make run's session"
+        os.write(master, b"\x03")
+        proc.wait(timeout=20)
+        deadline = time.monotonic() + 20
+        while any(os.path.exists(f"/proc/{pid}") for pid in emulators) \
+                and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not any(os.path.exists(f"/proc/{pid}") for pid in emulators)
+    finally:
+        try:
+            os.killpg(proc.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        proc.wait()
+        os.close(master)

@@ -1,6 +1,7 @@
 """The world model alone: geometry, kinematics, collisions, sensors, energy."""
 import json
 import math
+import os
 
 import pytest
 
@@ -15,10 +16,15 @@ def test_arena_file_errors(tmp_path):
         load_arena(str(bad))
     with pytest.raises(ArenaError, match="No such file"):
         load_arena(str(tmp_path / "missing.json"))
-    bad.write_text(json.dumps({"size": [2, 2], "station": {}, "robot": {"start": [5, 5, 0],
-                                                                       "radius": 0.1},
-                               "wiring": {}}))
+    with open(os.path.join(os.path.dirname(__file__), "..", "arenas", "default.json")) as f:
+        a = json.load(f)
+    a["robot"]["start"] = [5, 5, 0]
+    bad.write_text(json.dumps(a))
     with pytest.raises(ArenaError, match="start is not inside"):
+        load_arena(str(bad))
+    a["robot"].pop("start")
+    bad.write_text(json.dumps(a))
+    with pytest.raises(ArenaError, match="robot: 'start' is a required property"):
         load_arena(str(bad))
 
 
