@@ -5,12 +5,12 @@
 # part, ci/setup.d/m68k/runtime.sh). Sourced by ci/setup.d/m68k.sh. Picolibc would be smaller, but bookworm's picolibc source package
 # cannot be fetched here; newlib-source ships its tarball in a binary package.
 # The result (include/, lib/libc.a, lib/libm.a, ci/*.ci) lives in $BSCHED_TOOLS/newlib/HASH
-# (HASH: this script and the cross compiler's version); each checkout links
+# (HASH: this script's content, the cross compiler's and newlib-source's versions); each checkout links
 # build/newlib to the one it wants. The system calls newlib needs (read, write,
 # sbrk, _exit, ...) are the board's: drivers/libc_syscalls.c.
 apt_install newlib-source make xz-utils
 
-nl_hash=$( { sha256sum "$BSCHED_ROOT/ci/setup.d/m68k/newlib.sh"; m68k-linux-gnu-gcc --version | head -n1;
+nl_hash=$( { sha256sum < "$BSCHED_ROOT/ci/setup.d/m68k/newlib.sh"; m68k-linux-gnu-gcc --version | head -n1;
              dpkg-query -W -f='${Version}' newlib-source; } | sha256sum | cut -c1-16)
 nl_dir=$BSCHED_TOOLS/newlib/$nl_hash
 nl_link=$BSCHED_ROOT/build/newlib

@@ -22,7 +22,7 @@
 # the worst-case stack analysis (assure/stack.py) walks into the runtime too.
 rt_flags="-std=c11 -mcpu=cpu32 -msoft-float -Os -fwrapv -ffreestanding -fno-builtin -ffunction-sections
           -fstack-usage -fcallgraph-info=su"
-rt_hash=$( { sha256sum "$BSCHED_ROOT/ci/setup.d/m68k/runtime.sh"; m68k-linux-gnu-gcc --version | head -n1; } \
+rt_hash=$( { sha256sum < "$BSCHED_ROOT/ci/setup.d/m68k/runtime.sh"; m68k-linux-gnu-gcc --version | head -n1; } \
            | sha256sum | cut -c1-16)
 rt_dir=$BSCHED_TOOLS/cpu32-rt/$rt_hash
 rt_link=$BSCHED_ROOT/build/cpu32-rt
