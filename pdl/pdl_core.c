@@ -90,6 +90,7 @@ const char *pdl_strerror(int code)
     case PDL_ERR_KERNEL: return "kernel refused the cycle thread";
     case PDL_ERR_OUTSIDE_PROCESS: return "add_value outside a process";
     case PDL_ERR_TOO_MANY_BINDINGS: return "too many bindings";
+    case PDL_ERR_NOT_FINITE: return "NaN or infinite value for an integer quantity";
     default: return "unknown error";
     }
 }
@@ -283,6 +284,12 @@ void pdl_pend(struct pdl_head *h)
     h->pending = 1;
 }
 
+int pdl_not_finite(void)
+{
+    (void)pdl_refuse(PDL_ERR_NOT_FINITE, "add_value");
+    return 0;
+}
+
 void pdl_cycle_begin(uint32_t now_us)
 {
     if (pdl_cycle_count_begun == 0u) {
@@ -348,9 +355,12 @@ static void pdl_commit_int(struct pdl_quantity *q)
             cur = q->min;
         else
             cur = (int32_t)((uint32_t)cur + (uint32_t)low);
-    } else {            /* |sum| >= 2^31: rare, 64-bit */
-        int64_t w = (int64_t)cur + sum;
-        cur = w > q->max ? q->max : w < q->min ? q->min : (int32_t)w;
+    } else if (sum > 0) {   /* |sum| >= 2^31: rare, 64-bit */
+        /* compared with the distance to the bound, as cur + sum could pass
+         * INT64_MAX (the sum saturates there, add_value) */
+        cur = sum > (int64_t)q->max - cur ? q->max : (int32_t)(cur + sum);
+    } else {
+        cur = sum < (int64_t)q->min - cur ? q->min : (int32_t)(cur + sum);
     }
     q->cur = cur;
 }

@@ -2,6 +2,7 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 #include <cmocka.h>
@@ -151,6 +152,125 @@ static void test_clipping_at_int32_extremes(void **state)
     run_pdl();
     pdl_run_cycles(1);
     assert_int_equal(value(q_a), -1000);
+}
+
+/* ---- integer contributions at the extremes: no undefined behaviour ----
+ * This file is also built with -fsanitize=undefined,float-cast-overflow
+ * -fno-sanitize-recover (pdl.mk), so an overflow or an out-of-range
+ * conversion anywhere on these paths fails the test; the -O2 build checks
+ * the values, which such undefined behaviour used to get wrong. */
+enum contribution_kind { C_I64, C_U64, C_DOUBLE, C_FLOAT, C_LDOUBLE, C_INT };
+struct contribution { enum contribution_kind kind; int64_t i; uint64_t u; double d; };
+static struct contribution extreme[2];
+static unsigned extreme_n;
+static void add_extreme(const struct contribution *c)
+{
+    switch (c->kind) {
+    case C_I64: add_value(q_a, c->i); break;
+    case C_U64: add_value(q_a, c->u); break;
+    case C_DOUBLE: add_value(q_a, c->d); break;
+    case C_FLOAT: add_value(q_a, (float)c->d); break;
+    case C_LDOUBLE: add_value(q_a, (long double)c->d * (long double)c->d); break;
+    case C_INT: add_value(q_a, (int32_t)c->i); break;
+    }
+}
+static void extreme_first(void) { add_extreme(&extreme[0]); }
+static void extreme_second(void) { if (extreme_n > 1u) add_extreme(&extreme[1]); }
+
+/* One cycle of q_a in [min, max] from start with the contributions; the
+ * committed value, the misuse count and the last error through the out
+ * parameters. */
+static int32_t run_extreme(int32_t min, int32_t max, int32_t start, unsigned *misuse, int *last)
+{
+    struct pdl_stats st;
+    pdl_reset();
+    assert_int_equal(add_quantity(&q_a, min, max, start), PDL_OK);
+    add_process(extreme_first);
+    add_process(extreme_second);
+    assert_int_equal(run_pdl(), PDL_OK);
+    assert_int_equal(pdl_run_cycles(1), 1);
+    pdl_get_stats(&st);
+    *misuse = st.misuse;
+    *last = st.last_error;
+    return value(q_a);
+}
+
+static void test_integer_contribution_extremes(void **state)
+{
+    static const struct {
+        struct contribution c[2];
+        unsigned n;
+        int32_t min, max, start, want;
+    } cases[] = {
+        /* huge integers saturate and clip, never wrap or reverse the clip */
+        {{{C_I64, INT64_MAX, 0, 0}}, 1, -100, 100, 50, 100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_I64, INT64_MAX, 0, 0}}, 2, -100, 100, 50, 100},
+        {{{C_I64, INT64_MIN, 0, 0}}, 1, -100, 100, -50, -100},
+        {{{C_I64, INT64_MIN, 0, 0}, {C_I64, INT64_MIN, 0, 0}}, 2, -100, 100, -50, -100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_INT, 1, 0, 0}}, 2, -100, 100, 99, 100},
+        {{{C_I64, INT64_MIN, 0, 0}, {C_INT, -1, 0, 0}}, 2, -100, 100, -99, -100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_I64, INT64_MIN, 0, 0}}, 2, -100, 100, 7, 6},
+        {{{C_I64, INT64_MAX, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MAX, INT32_MAX},
+        {{{C_I64, INT64_MIN, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MIN},
+        {{{C_I64, INT64_MAX - 5, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MAX},
+        {{{C_U64, 0, UINT64_MAX, 0}}, 1, -100, 100, 0, 100},         /* not -1 */
+        {{{C_U64, 0, (uint64_t)INT64_MAX + 1u, 0}}, 1, -100, 100, 0, 100},
+        /* huge finite floating values saturate the same way */
+        {{{C_DOUBLE, 0, 0, 1e300}}, 1, -100, 100, 0, 100},
+        {{{C_DOUBLE, 0, 0, -1e300}}, 1, -100, 100, 0, -100},
+        {{{C_DOUBLE, 0, 0, 1e300}}, 1, INT32_MIN, INT32_MAX, INT32_MAX, INT32_MAX},
+        {{{C_DOUBLE, 0, 0, -1e300}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MIN},
+        {{{C_DOUBLE, 0, 0, 9.3e18}}, 1, -100, 100, -100, 100},       /* just past 2^63 */
+        {{{C_DOUBLE, 0, 0, -9.3e18}}, 1, -100, 100, 100, -100},
+        {{{C_DOUBLE, 0, 0, 1e300}, {C_DOUBLE, 0, 0, 1e300}}, 2, -100, 100, 0, 100},
+        {{{C_FLOAT, 0, 0, 1e30}}, 1, -100, 100, 0, 100},
+        {{{C_FLOAT, 0, 0, -1e30}}, 1, -100, 100, 0, -100},
+        {{{C_LDOUBLE, 0, 0, 1e300}}, 1, -100, 100, 0, 100},          /* 1e600L */
+        /* in range: truncated toward zero, as C converts */
+        {{{C_DOUBLE, 0, 0, 2.9}}, 1, -100, 100, 0, 2},
+        {{{C_DOUBLE, 0, 0, -2.9}}, 1, -100, 100, 0, -2},
+        {{{C_FLOAT, 0, 0, -7.5}}, 1, -100, 100, 0, -7},
+        {{{C_LDOUBLE, 0, 0, 3.0}}, 1, -100, 100, 0, 9},
+    };
+    static const double not_finite[] = {NAN, -NAN, INFINITY, -INFINITY};
+    static const enum contribution_kind floating[] = {C_DOUBLE, C_FLOAT, C_LDOUBLE};
+    unsigned i, k, misuse;
+    int last;
+    int32_t got;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        extreme[0] = cases[i].c[0];
+        extreme[1] = cases[i].c[1];
+        extreme_n = cases[i].n;
+        got = run_extreme(cases[i].min, cases[i].max, cases[i].start, &misuse, &last);
+        if (got != cases[i].want || misuse != 0u)
+            print_message("case %u: %d (want %d), misuse %u\n", i, got, cases[i].want, misuse);
+        assert_int_equal(got, cases[i].want);
+        assert_int_equal(misuse, 0);
+    }
+    /* NaN and the infinities: refused (misuse, reported), the quantity
+     * unchanged, and a valid contribution of the same cycle still counts */
+    for (i = 0; i < sizeof not_finite / sizeof not_finite[0]; i++) {
+        for (k = 0; k < sizeof floating / sizeof floating[0]; k++) {
+            extreme[0] = (struct contribution){floating[k], 0, 0, not_finite[i]};
+            extreme_n = 1;
+            if (run_extreme(-100, 100, 42, &misuse, &last) != 42 || misuse != 1u)
+                print_message("not finite %u, kind %u: misuse %u\n", i, k, misuse);
+            assert_int_equal(run_extreme(-100, 100, 42, &misuse, &last), 42);
+            assert_int_equal(misuse, 1);
+            assert_int_equal(last, PDL_ERR_NOT_FINITE);
+            assert_non_null(strstr(pdl_last_message(), "add_value"));
+            assert_non_null(strstr(pdl_last_message(), pdl_strerror(PDL_ERR_NOT_FINITE)));
+            extreme[1] = (struct contribution){C_INT, -5, 0, 0};
+            extreme_n = 2;
+            assert_int_equal(run_extreme(-100, 100, 42, &misuse, &last), 37);
+            assert_int_equal(misuse, 1);
+            /* and at the bounds: refused, not clipped to the opposite one */
+            extreme_n = 1;
+            assert_int_equal(run_extreme(-100, 100, 100, &misuse, &last), 100);
+            assert_int_equal(run_extreme(-100, 100, -100, &misuse, &last), -100);
+        }
+    }
 }
 
 /* ---- order independence: shuffle the process order, same result ---- */
@@ -642,6 +762,7 @@ int main(void)
         cmocka_unit_test_setup(test_clipping_both_bounds, setup),
         cmocka_unit_test_setup(test_clip_applies_to_the_sum, setup),
         cmocka_unit_test_setup(test_clipping_at_int32_extremes, setup),
+        cmocka_unit_test_setup(test_integer_contribution_extremes, setup),
         cmocka_unit_test_setup(test_shuffled_order_same_result, setup),
         cmocka_unit_test_setup(test_pv_periods, setup),
         cmocka_unit_test_setup(test_recorded_plan_equals_live_bsched, setup),
