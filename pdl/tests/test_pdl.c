@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -693,6 +694,120 @@ static void test_misuse_of_bindings(void **state)
     expect_refused(pdl_bind_table(NULL, 1), PDL_ERR_NULL, &misuse);
 }
 
+/* ---- a refused binding table binds nothing, whichever line is bad ---- */
+static struct pdl_sensor t_light, t_bump;
+static struct pdl_quantity t_left, t_right, t_undeclared;
+static void t_drive(void)
+{
+    add_value(t_left, 300 + value(t_light));
+    add_value(t_right, -300);
+}
+
+static void test_bind_table_all_or_nothing(void **state)
+{
+    /* good lines, each a different port; a bad line goes in at every position */
+    static const struct pdl_binding good[] = {
+        {&t_light.head, PDL_ANALOG_IN, 4},
+        {&t_left.head, PDL_MOTOR, 0},
+        {&t_right.head, PDL_MOTOR, 1},
+        {&t_bump.head, PDL_BINARY_IN, 1},
+    };
+    static const struct { struct pdl_binding line; int code; } bad[] = {
+        {{&t_left.head, PDL_MOTOR, 7}, PDL_ERR_PORT},               /* no such motor */
+        {{&t_light.head, PDL_MOTOR, 2}, PDL_ERR_PORT},              /* a sensor on an output */
+        {{&t_undeclared.head, PDL_MOTOR, 2}, PDL_ERR_UNDECLARED},
+        {{NULL, PDL_MOTOR, 2}, PDL_ERR_NULL},
+        {{&t_right.head, PDL_MOTOR, 0}, PDL_ERR_PORT_TAKEN},        /* motor 0 twice in the table */
+        {{&t_light.head, PDL_ANALOG_IN, 5}, PDL_ERR_TWICE},         /* a sensor twice in the table */
+    };
+    struct pdl_binding table[5];
+    struct pdl_stats st;
+    unsigned b, pos, i, n;
+    (void)state;
+    for (b = 0; b < sizeof bad / sizeof bad[0]; b++) {
+        for (pos = 0; pos <= 4; pos++) {
+            pdl_reset();
+            assert_int_equal(add_sensor(&t_light, 0, 255), PDL_OK);
+            assert_int_equal(add_sensor(&t_bump, 0, 1), PDL_OK);
+            assert_int_equal(add_quantity(&t_left, -1000, 1000, 0), PDL_OK);
+            assert_int_equal(add_quantity(&t_right, -1000, 1000, 0), PDL_OK);
+            for (i = 0, n = 0; i < 5; i++)
+                table[i] = i == pos ? bad[b].line : good[n++];
+            if (pdl_bind_table(table, 5) != bad[b].code)
+                print_message("bad line %u at %u\n", b, pos);
+            pdl_get_stats(&st);
+            assert_int_equal(st.misuse, 1);
+            assert_int_equal(st.last_error, bad[b].code);
+            assert_non_null(strstr(pdl_last_message(), "pdl_bind_table: line "));
+            assert_non_null(strstr(pdl_last_message(), ", none bound"));
+            assert_non_null(strstr(pdl_last_message(), pdl_strerror(bad[b].code)));
+            if (b < 4u) {       /* wrong on its own: the message names its line */
+                char line[24];
+                snprintf(line, sizeof line, "line %u,", pos + 1u);
+                assert_non_null(strstr(pdl_last_message(), line));
+            }
+            /* nothing of the table was bound: no port in use ... */
+            for (i = PDL_ANALOG_IN; i < PDL_PORT_END; i++)
+                assert_false(pdl_bind_uses((enum pdl_port)i));
+            /* ... and nothing drives a motor or reads an input afterwards */
+            assert_int_equal(add_process(t_drive), 0);
+            pdl_host_set_input(PDL_ANALOG_IN, 4, 200);
+            assert_int_equal(run_pdl(), PDL_OK);
+            assert_int_equal(pdl_run_cycles(3), 3);
+            assert_int_equal(value(t_light), 0);
+            assert_int_equal(value(t_left), 900);
+            assert_int_equal(value(t_right), -900);
+            assert_int_equal(pdl_host_writes(PDL_MOTOR, 0), 0);
+            assert_int_equal(pdl_host_writes(PDL_MOTOR, 1), 0);
+            assert_int_equal(pdl_host_output(PDL_MOTOR, 0), 0);
+            assert_int_equal(pdl_host_output(PDL_MOTOR, 1), 0);
+        }
+    }
+    /* too many lines for the room left: refused whole as well */
+    pdl_reset();
+    assert_int_equal(add_sensor(&t_light, 0, 255), PDL_OK);
+    {
+        static struct pdl_quantity outs[PDL_MAX_BINDINGS];
+        static struct pdl_binding lines[PDL_MAX_BINDINGS + 1];
+        static const struct { enum pdl_port port; unsigned n; } room[] = {
+            {PDL_BIO_OUT, 16}, {PDL_FAST_OUT, 16}, {PDL_PWM, 16},
+        };
+        unsigned r;
+        lines[0] = (struct pdl_binding){&t_light.head, PDL_ANALOG_IN, 0};
+        for (r = 0, n = 1; r < 3 && n <= PDL_MAX_BINDINGS; r++)
+            for (i = 0; i < room[r].n && n <= PDL_MAX_BINDINGS; i++, n++) {
+                assert_int_equal(add_quantity(&outs[n - 1u], 0, 1, 0), PDL_OK);
+                lines[n] = (struct pdl_binding){&outs[n - 1u].head, room[r].port, i};
+            }
+        assert_int_equal(n, PDL_MAX_BINDINGS + 1);
+        assert_int_equal(pdl_bind_table(lines, n), PDL_ERR_TOO_MANY_BINDINGS);
+        for (i = PDL_ANALOG_IN; i < PDL_PORT_END; i++)
+            assert_false(pdl_bind_uses((enum pdl_port)i));
+        /* one line fewer fits, and is bound whole */
+        assert_int_equal(pdl_bind_table(lines, n - 1u), PDL_OK);
+        assert_true(pdl_bind_uses(PDL_ANALOG_IN));
+        assert_true(pdl_bind_uses(PDL_FAST_OUT));
+    }
+    /* after a refusal the corrected table binds every line */
+    pdl_reset();
+    add_sensor(&t_light, 0, 255);
+    add_sensor(&t_bump, 0, 1);
+    add_quantity(&t_left, -1000, 1000, 0);
+    add_quantity(&t_right, -1000, 1000, 0);
+    table[0] = good[0];
+    table[1] = good[1];
+    table[2] = bad[0].line;
+    assert_int_equal(pdl_bind_table(table, 3), PDL_ERR_PORT);
+    assert_int_equal(pdl_bind_table(good, 4), PDL_OK);
+    add_process(t_drive);
+    pdl_host_set_input(PDL_ANALOG_IN, 4, 200);
+    run_pdl();
+    pdl_run_cycles(1);
+    assert_int_equal(value(t_light), 200);
+    assert_int_equal(pdl_host_output(PDL_MOTOR, 0), 500);
+    assert_int_equal(pdl_host_output(PDL_MOTOR, 1), -300);
+}
+
 static void test_misuse_after_run(void **state)
 {
     static struct pdl_quantity late;
@@ -773,6 +888,7 @@ int main(void)
         cmocka_unit_test_setup(test_actuator_clipped_to_port_and_driver_errors, setup),
         cmocka_unit_test_setup(test_misuse_before_run, setup),
         cmocka_unit_test_setup(test_misuse_of_bindings, setup),
+        cmocka_unit_test_setup(test_bind_table_all_or_nothing, setup),
         cmocka_unit_test_setup(test_misuse_after_run, setup),
         cmocka_unit_test_setup(test_add_value_on_undeclared_quantity, setup),
         cmocka_unit_test_setup(test_reset_and_rerun, setup),
