@@ -182,16 +182,29 @@ static inline __attribute__((always_inline)) int pdl_add_int_(int64_t *sum, int6
     return 1;
 }
 
-/* add_value's usual case, an integer type of 32 bits or less (|v| < 2^32).
- * Only a sum within 2^32 of an int64 limit, whose high word is 0x7FFFFFFF
- * or 0x80000000, can be taken past it by such a v: one test of the high
- * word, cheaper on the CPU32 than GCC's general overflow test. */
+/* The int64 value of a uint64 bit pattern (two's complement), without the
+ * implementation-defined conversion; compiles to nothing. */
+static inline __attribute__((always_inline)) int64_t pdl_i64_(uint64_t u)
+{
+    return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)~u - 1;
+}
+
+/* Redoes a small addition whose result reached 2^62 in magnitude, with
+ * saturation (pdl_core.c); *sum holds the wrapped result. */
+void pdl_sum_far(int64_t *sum, int64_t v);
+
+/* add_value's usual case, an integer type of 32 bits or less (|v| < 2^32):
+ * added modulo 2^64 (never undefined), then one test of the result's high
+ * word, 2 instructions on the CPU32 (an add that sets the sign, a branch):
+ * only a result of magnitude 2^62 or more goes to pdl_sum_far, and an
+ * addition that wrapped always lands there (from within 2^32 of one int64
+ * limit to within 2^32 of the other). */
 static inline __attribute__((always_inline)) int pdl_add_small_(int64_t *sum, int64_t v)
 {
-    if ((uint32_t)((uint64_t)*sum >> 32) + 0x80000001u > 1u)
-        *sum += v;
-    else
-        (void)pdl_add_int_(sum, v);
+    uint64_t n = (uint64_t)*sum + (uint64_t)v;
+    *sum = pdl_i64_(n);
+    if ((uint32_t)(n >> 32) + 0x40000000u >= 0x80000000u)
+        pdl_sum_far(sum, v);
     return 1;
 }
 
