@@ -256,7 +256,8 @@ int pdl_core_start(void)
 #pragma GCC push_options
 #pragma GCC optimize("O2")
 
-void pdl_pend(struct pdl_head *h)
+/* Everything but a declared integer quantity in a process (pdl_pend). */
+static void __attribute__((noinline)) pdl_pend_other(struct pdl_head *h)
 {
     /* declared quantities have an id (pdl_reset clears them) */
     if (h->id == 0u) {
@@ -273,15 +274,24 @@ void pdl_pend(struct pdl_head *h)
         (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
         return;
     }
-    if (h->kind == PDL_KIND_INT) {
-        pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
-    } else if (h->kind == PDL_KIND_FLOAT) {
+    if (h->kind == PDL_KIND_FLOAT) {
         pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
+        h->pending = 1;
     } else {    /* a sensor cast to a quantity: never committed */
         (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value (not a writable quantity)");
+    }
+}
+
+/* The usual case first and alone, as the CPU32 runs it once per quantity
+ * and cycle: a declared integer quantity's first contribution in a process. */
+void pdl_pend(struct pdl_head *h)
+{
+    if (h->kind == PDL_KIND_INT && h->id != 0u && pdl_current >= 0) {
+        pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
+        h->pending = 1;
         return;
     }
-    h->pending = 1;
+    pdl_pend_other(h);
 }
 
 void pdl_sum_far(int64_t *sum, int64_t v)
