@@ -38,6 +38,43 @@ check-net-unit:
 	@$(MAKE) --no-print-directory $(NET_UNIT_TESTS)
 	@RESULTS=$(RESULTS) ci/cmocka-suite net-unit $(NET_UNIT_TESTS)
 
+# XDR lengths near 2^32 with every size_t width at hand (net/tests/xdr_lengths.c):
+# the 64-bit host and the 32-bit host (-m32), both under ASan/UBSan, and the
+# CPU32's code generation (-mcpu=cpu32, 32-bit size_t, big-endian) run by
+# qemu-user. QEMU has no CPU32 model: -cpu m68020 runs it, as the 68020's
+# instruction set holds what GCC emits for the CPU32 here, and the m68k C
+# library is 68020 code (the CPU model QEMU picks from the ELF's CPU32 flag
+# does not run that library).
+NET_XDR_WIDTH_TESTS := $(NET_BUILD)/tests/xdr_lengths $(NET_BUILD)/tests/xdr_lengths_m32 \
+                       $(NET_BUILD)/tests/xdr_lengths_cpu32
+NET_XDR_WIDTH_SRCS  := net/tests/xdr_lengths.c net/xdr.c
+QEMU_M68K_USER ?= qemu-m68k
+# Not in HOST_UNIT_CHECKS: assure/ rebuilds those with its own HOST_CFLAGS
+# (--coverage, sanitizers), which the m68k build cannot take.
+CHECKS += net-xdr-widths
+NET_XDR_CPU32_FLAGS := -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror \
+                       -mcpu=cpu32 -static -I$(ROOT)
+$(NET_BUILD)/tests/xdr_lengths: $(NET_XDR_WIDTH_SRCS) net/xdr.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $(NET_XDR_WIDTH_SRCS)
+$(NET_BUILD)/tests/xdr_lengths_m32: $(NET_XDR_WIDTH_SRCS) net/xdr.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) -m32 -o $@ $(NET_XDR_WIDTH_SRCS)
+$(NET_BUILD)/tests/xdr_lengths_cpu32: $(NET_XDR_WIDTH_SRCS) net/xdr.h
+	@mkdir -p $(@D)
+	m68k-linux-gnu-gcc $(NET_XDR_CPU32_FLAGS) -o $@ $(NET_XDR_WIDTH_SRCS)
+
+.PHONY: check-net-xdr-widths
+check-net-xdr-widths:
+	@$(SETUP) base m68k net32
+	@$(MAKE) --no-print-directory $(NET_XDR_WIDTH_TESTS)
+	@p=0; f=0; for t in $(NET_XDR_WIDTH_TESTS); do \
+	    case $$t in *_cpu32) run="$(QEMU_M68K_USER) -cpu m68020 $$t";; *) run=$$t;; esac; \
+	    out=$$(timeout 120 $$run 2>&1); r=$$?; echo "$$out" | tail -40; \
+	    if [ $$r -eq 0 ] && echo "$$out" | grep -q ' 0 failed$$'; then p=$$((p + 1)); \
+	    else f=$$((f + 1)); echo "$$t: FAILED (exit $$r)"; fi; \
+	done; $(call record,net-xdr-widths,$$p,$$f); [ $$f -eq 0 ]
+
 NETNODE_ELF := $(call app_elf,netnode)
 
 # The XDR sample tool the Python comparison (test_xdr_python.py) runs.
@@ -134,11 +171,14 @@ net-bench:
 #                         executions each (the FEC one FUZZ_RUNS / NET_FUZZ_FEC_DIV)
 #   make check-net-fuzz   the same, 2 x 10^5 executions each (suite net-fuzz)
 #   make check-net-cbmc   the memory-safety proofs (suite net-cbmc): frame receiver,
-#                         XDR decoder, FEC receiver, Reed-Solomon decoder, GF(256)
+#                         XDR decoder (64-bit size_t, and 32-bit at the widest maxima),
+#                         FEC receiver, Reed-Solomon decoder, GF(256)
 NET_FUZZ_CC    ?= clang-14
 NET_FUZZ_FLAGS := -std=c99 -O1 -g -I$(ROOT) -fsanitize=fuzzer,address,undefined \
                   -fno-sanitize-recover=all
-NET_FUZZERS    := frame xdr fec
+# xdr32: the XDR target built with -m32, so size_t has the CPU32's 32 bits
+# (clang-14's i386 libFuzzer runtime; ci/setup.d/net32.sh).
+NET_FUZZERS    := frame xdr xdr32 fec
 net_fuzz_srcs_frame := net/frame.c net/crc16.c
 net_fuzz_srcs_xdr   := net/xdr.c
 net_fuzz_srcs_fec   := net/fec.c net/rs.c net/crc16.c
@@ -154,6 +194,9 @@ $(NET_BUILD)/fuzz/fuzz_%: net/fuzz/fuzz_%.c $(wildcard net/*.h) $(wildcard net/*
                           net/tests/xdr_sample.h
 	@mkdir -p $(@D)
 	$(NET_FUZZ_CC) $(NET_FUZZ_FLAGS) -o $@ $< $(net_fuzz_srcs_$*)
+$(NET_BUILD)/fuzz/fuzz_xdr32: net/fuzz/fuzz_xdr.c net/xdr.c net/xdr.h net/tests/xdr_sample.h
+	@mkdir -p $(@D)
+	$(NET_FUZZ_CC) $(NET_FUZZ_FLAGS) -m32 -o $@ $< net/xdr.c
 
 # $(1) = runs; prints libFuzzer's last lines; fails on any finding.
 define net_fuzz_run
@@ -171,7 +214,7 @@ fuzz: $(patsubst %,$(NET_BUILD)/fuzz/fuzz_%,$(NET_FUZZERS))
 	$(call net_fuzz_run,$(FUZZ_RUNS),[ $$f -eq 0 ])
 
 check-net-fuzz:
-	@$(SETUP) net
+	@$(SETUP) net net32
 	@$(MAKE) --no-print-directory $(patsubst %,$(NET_BUILD)/fuzz/fuzz_%,$(NET_FUZZERS))
 	$(call net_fuzz_run,$(NET_FUZZ_CHECK_RUNS),$(call record,net-fuzz,$$p,$$f); [ $$f -eq 0 ])
 
@@ -187,6 +230,18 @@ XDR_BOUND ?= 40
 NET_CBMC_XDR := --function harness $(NET_CBMC_CHECKS) --unwind $$(($(XDR_BOUND) + 6)) \
                 --unwinding-assertions -DXDR_BOUND=$(XDR_BOUND) -I $(ROOT) \
                 net/proofs/xdr_decode_harness.c net/xdr.c
+# The XDR length arithmetic with a 32-bit size_t (--32, as on the CPU32): every
+# length and count 0..UINT32_MAX with max UINT32_MAX, on any stream of up to
+# XDR_LEN_BOUND bytes from any position (bounds: net/proofs/xdr_lengths_harness.c).
+# One run per routine (XDR_LEN_CASE); --unwindset gives each loop the most
+# iterations that many bytes allow, so the unwinding assertions also prove that
+# no loop runs longer than the stream holds.
+XDR_LEN_BOUND ?= 16
+NET_CBMC_XDR32 = --32 --function harness $(NET_CBMC_CHECKS) \
+                 --unwindset nxdr_opaque.0:$$(($(XDR_LEN_BOUND) + 1)),nxdr_opaque.1:4,nxdr_string.0:$$(($(XDR_LEN_BOUND) + 1)),nxdr_vector.0:$$(($(XDR_LEN_BOUND) / 4 + 1)) \
+                 --unwinding-assertions -DXDR_LEN_BOUND=$(XDR_LEN_BOUND) \
+                 -DXDR_LEN_SIZE_MAX=0xFFFFFFFFu -DXDR_LEN_CASE=$(1) -I $(ROOT) \
+                 net/proofs/xdr_lengths_harness.c net/xdr.c
 # The FEC receiver (interrupt half): the same induction over byte sequences.
 NET_CBMC_FEC_RX := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 260 \
                    --unwinding-assertions -I $(ROOT) net/proofs/fec_rx_harness.c net/fec.c \
@@ -199,12 +254,14 @@ NET_CBMC_RS_DECODE := --function harness $(NET_CBMC_CHECKS) --unwind 40 \
 # ... and the real GF(256) operations in bounds for every operand.
 NET_CBMC_RS_GF := --function harness $(NET_CBMC_CHECKS) --unwind 256 --unwinding-assertions \
                   -I $(ROOT) net/proofs/rs_gf_harness.c
-NET_CBMC_RUNS := FRAME XDR FEC_RX RS_DECODE RS_GF
+NET_CBMC_RUNS := FRAME XDR XDR32_OPAQUE XDR32_BYTES XDR32_STRING XDR32_ARRAY FEC_RX RS_DECODE RS_GF
 check-net-cbmc:
 	@$(SETUP) cbmc
 	@p=0; f=0; for run in $(NET_CBMC_RUNS); do \
 	    case $$run in \
 	        FRAME) args="$(NET_CBMC_FRAME)";; XDR) args="$(NET_CBMC_XDR)";; \
+        XDR32_OPAQUE) args="$(call NET_CBMC_XDR32,0)";; XDR32_BYTES) args="$(call NET_CBMC_XDR32,1)";; \
+        XDR32_STRING) args="$(call NET_CBMC_XDR32,2)";; XDR32_ARRAY) args="$(call NET_CBMC_XDR32,3)";; \
 	        FEC_RX) args="$(NET_CBMC_FEC_RX)";; RS_DECODE) args="$(NET_CBMC_RS_DECODE)";; \
 	        RS_GF) args="$(NET_CBMC_RS_GF)";; \
 	    esac; \

@@ -25,16 +25,53 @@ size_t nxdr_getpos(const struct nxdr *x)
     return x->pos;
 }
 
-static int nxdr_fail(struct nxdr *x)
+int nxdr_error(const struct nxdr *x)
 {
-    x->failed = 1;
+    return x->failed;
+}
+
+const char *nxdr_strerror(int err)
+{
+    switch (err) {
+    case NXDR_OK: return "no error";
+    case NXDR_ESHORT: return "item longer than the input left (or the room, encoding)";
+    case NXDR_ETOOLONG: return "length or count above its maximum";
+    case NXDR_EVALUE: return "value the type forbids";
+    case NXDR_EELEMENT: return "an element's routine failed";
+    default: return "unknown XDR error";
+    }
+}
+
+/* Fails the stream; the first reason stays. */
+static int nxdr_fail_why(struct nxdr *x, enum nxdr_err why)
+{
+    if (!x->failed)
+        x->failed = (uint8_t)why;
     return 0;
 }
 
-/* Room for n more bytes? (Written so that pos + n cannot overflow.) */
-static int nxdr_room(const struct nxdr *x, size_t n)
+static int nxdr_fail(struct nxdr *x)
 {
-    return !x->failed && x->pos <= x->size && n <= x->size - x->pos;
+    return nxdr_fail_why(x, NXDR_ESHORT);
+}
+
+/* Room for len bytes and then pad more? Lengths come from the input as
+ * uint32_t, and size_t may be narrower (16 bits), as wide (the CPU32) or
+ * wider: len and pad are compared with what is left one at a time, never
+ * added to each other nor to pos first, so nothing wraps and no length is
+ * truncated to size_t before it is checked. */
+static int nxdr_room2(const struct nxdr *x, uint32_t len, uint32_t pad)
+{
+    size_t left;
+    if (x->failed || x->pos > x->size)
+        return 0;
+    left = x->size - x->pos;
+    return len <= left && pad <= left - len;
+}
+
+static int nxdr_room(const struct nxdr *x, uint32_t n)
+{
+    return nxdr_room2(x, n, 0);
 }
 
 static int nxdr_word(struct nxdr *x, uint32_t *v)
@@ -96,11 +133,11 @@ int nxdr_hyper(struct nxdr *x, int64_t *v)
 int nxdr_bool(struct nxdr *x, int32_t *v)
 {
     if (x->op == NXDR_ENCODE && *v != 0 && *v != 1)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_EVALUE);
     if (!nxdr_int(x, v))
         return 0;
     if (*v != 0 && *v != 1)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_EVALUE);
     return 1;
 }
 
@@ -135,7 +172,9 @@ int nxdr_opaque(struct nxdr *x, uint8_t *data, uint32_t len)
 {
     uint32_t pad = (4u - (len & 3u)) & 3u;
     uint32_t i;
-    if (!nxdr_room(x, (size_t)len + pad))
+    /* not (size_t)len + pad: with a 32-bit size_t that is 0 for len
+     * 0xFFFFFFFD..0xFFFFFFFF, and the copy below would run past both buffers */
+    if (!nxdr_room2(x, len, pad))
         return nxdr_fail(x);
     for (i = 0; i < len; i++) {
         if (x->op == NXDR_ENCODE)
@@ -146,7 +185,7 @@ int nxdr_opaque(struct nxdr *x, uint8_t *data, uint32_t len)
     /* Padding is written as zeros and, as libtirpc does, not checked on input. */
     for (i = 0; i < pad && x->op == NXDR_ENCODE; i++)
         x->buf[x->pos + len + i] = 0;
-    x->pos += (size_t)len + pad;
+    x->pos += (size_t)len + (size_t)pad;     /* at most what was left */
     return 1;
 }
 
@@ -154,11 +193,11 @@ int nxdr_bytes(struct nxdr *x, uint8_t *data, uint32_t *len, uint32_t max)
 {
     uint32_t n = *len;
     if (x->op == NXDR_ENCODE && n > max)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
     if (!nxdr_u_int(x, &n))
         return 0;
     if (n > max)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
     if (!nxdr_opaque(x, data, n))
         return 0;
     *len = n;
@@ -169,8 +208,11 @@ int nxdr_string(struct nxdr *x, char *str, uint32_t max)
 {
     uint32_t n = 0;
     if (x->op == NXDR_ENCODE) {
-        while (n <= max && str[n] != '\0')
+        /* n < max, not n <= max: with max = UINT32_MAX, n++ would wrap */
+        while (n < max && str[n] != '\0')
             n++;
+        if (str[n] != '\0')        /* longer than max */
+            return nxdr_fail_why(x, NXDR_ETOOLONG);
     }
     if (!nxdr_bytes(x, (uint8_t *)str, &n, max))
         return 0;
@@ -183,9 +225,13 @@ int nxdr_vector(struct nxdr *x, void *array, uint32_t count, size_t elsize, nxdr
 {
     uint8_t *p = array;
     uint32_t i;
+    /* every element's offset i * elsize must fit size_t (and i itself,
+     * when size_t is narrower than 32 bits); no array is larger */
+    if (count != 0u && elsize != 0u && count - 1u > SIZE_MAX / elsize)
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
     for (i = 0; i < count; i++) {
         if (!proc(x, p + (size_t)i * elsize))
-            return nxdr_fail(x);
+            return nxdr_fail_why(x, NXDR_EELEMENT);
     }
     return 1;
 }
@@ -195,14 +241,16 @@ int nxdr_array(struct nxdr *x, void *array, uint32_t *count, uint32_t max, size_
 {
     uint32_t n = *count;
     if (x->op == NXDR_ENCODE && n > max)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
     if (!nxdr_u_int(x, &n))
         return 0;
     if (n > max)
-        return nxdr_fail(x);
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
     /* Each element takes at least 4 bytes: refuse counts the input cannot hold
-     * before calling proc (a decoder must not spin on a huge claimed count). */
-    if (x->op == NXDR_DECODE && (size_t)n > (x->size - x->pos) / 4u)
+     * before calling proc (a decoder must not spin on a huge claimed count).
+     * n is not cast to size_t: a 16-bit size_t would truncate it. pos <= size
+     * here (nxdr_u_int just succeeded). */
+    if (x->op == NXDR_DECODE && n > (x->size - x->pos) / 4u)
         return nxdr_fail(x);
     if (!nxdr_vector(x, array, n, elsize, proc))
         return 0;

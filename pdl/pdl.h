@@ -73,6 +73,7 @@
 #define PDL_ERR_KERNEL            (-15)  /* the kernel refused the cycle thread */
 #define PDL_ERR_OUTSIDE_PROCESS   (-16)  /* add_value outside a process body */
 #define PDL_ERR_TOO_MANY_BINDINGS (-17)  /* more than PDL_MAX_BINDINGS */
+#define PDL_ERR_NOT_FINITE        (-18)  /* NaN or infinity added to an integer quantity */
 
 /* ---- quantities ---- */
 enum pdl_kind { PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR };
@@ -124,16 +125,135 @@ int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max);
 /* add_value(q, e): adds e (converted to q's type) to q's next value. The
  * cycle's contributions are summed and take effect at the end of the cycle,
  * clipped to [min, max]. Only from a process body. q is evaluated more
- * than once (use a quantity's name, as in the paper). */
+ * than once (use a quantity's name, as in the paper); e once.
+ *
+ * On an integer quantity no value of e is undefined: the sum saturates at
+ * the int64 limits instead of overflowing, a floating e is truncated toward
+ * zero and one beyond the int64 range counts as the nearer limit (so 1e300
+ * clips q to its max), and NaN or an infinity is refused (PDL_ERR_NOT_FINITE,
+ * counted in misuse and reported) while the cycle's other contributions stay.
+ * A float or double is classified from its IEEE 754 bits, so this costs the
+ * soft-float CPU32 no float arithmetic beyond the conversion it always had. */
 #define add_value(q, e)                                             \
     do {                                                            \
-        (q).sum += (__typeof__((q).sum))(e);                        \
-        if (!(q).head.pending)                                      \
+        __typeof__(+(e)) pdl_e_ = (e);                              \
+        if (PDL_ADD_(&(q).sum, pdl_e_) && !(q).head.pending)        \
             pdl_pend(&(q).head);                                    \
     } while (0)
 
 /* Puts a quantity on the commit list (add_value's first use in a cycle). */
 void pdl_pend(struct pdl_head *q);
+/* Refuses a NaN or infinite contribution to an integer quantity (counted,
+ * reported); returns 0. */
+int pdl_not_finite(void);
+
+/* add_value's sum by the types of q and e (each branch type-checks for any
+ * arithmetic e; only the chosen one is compiled into code). */
+#define PDL_IS_(x, type) __builtin_types_compatible_p(__typeof__(x), type)
+#define PDL_ADD_(sum, v)                                                         \
+    __builtin_choose_expr(PDL_IS_(*(sum), float),                                \
+        pdl_add_to_float_((float *)(void *)(sum), (float)(v)),                   \
+    __builtin_choose_expr(PDL_IS_(v, float),                                     \
+        pdl_add_float_((int64_t *)(void *)(sum), (float)(v)),                    \
+    __builtin_choose_expr(PDL_IS_(v, double),                                    \
+        pdl_add_double_((int64_t *)(void *)(sum), (double)(v)),                  \
+    __builtin_choose_expr(PDL_IS_(v, long double),                               \
+        pdl_add_ldouble_((int64_t *)(void *)(sum), (long double)(v)),            \
+    __builtin_choose_expr(PDL_IS_(v, unsigned long long) ||                      \
+                          (PDL_IS_(v, unsigned long) && sizeof(long) > 4),        \
+        pdl_add_u64_((int64_t *)(void *)(sum), (uint64_t)(v)),                   \
+    __builtin_choose_expr(sizeof(v) <= 4,                                        \
+        pdl_add_small_((int64_t *)(void *)(sum), (int64_t)(v)),                  \
+        pdl_add_int_((int64_t *)(void *)(sum), (int64_t)(v))))))))
+
+static inline int pdl_add_to_float_(float *sum, float v)
+{
+    *sum += v;
+    return 1;
+}
+
+/* Every integer type but the unsigned 64-bit ones fits int64 exactly. */
+static inline __attribute__((always_inline)) int pdl_add_int_(int64_t *sum, int64_t v)
+{
+    int64_t s;
+    if (__builtin_add_overflow(*sum, v, &s))
+        s = v < 0 ? INT64_MIN : INT64_MAX;
+    *sum = s;
+    return 1;
+}
+
+/* The int64 value of a uint64 bit pattern (two's complement), without the
+ * implementation-defined conversion; compiles to nothing. */
+static inline __attribute__((always_inline)) int64_t pdl_i64_(uint64_t u)
+{
+    return u <= (uint64_t)INT64_MAX ? (int64_t)u : -(int64_t)~u - 1;
+}
+
+/* Redoes a small addition whose result reached 2^62 in magnitude, with
+ * saturation (pdl_core.c); *sum holds the wrapped result. */
+void pdl_sum_far(int64_t *sum, int64_t v);
+
+/* add_value's usual case, an integer type of 32 bits or less (|v| < 2^32):
+ * added modulo 2^64 (never undefined), then one test of the result's high
+ * word, 2 instructions on the CPU32 (an add that sets the sign, a branch):
+ * only a result of magnitude 2^62 or more goes to pdl_sum_far, and an
+ * addition that wrapped always lands there (from within 2^32 of one int64
+ * limit to within 2^32 of the other). */
+static inline __attribute__((always_inline)) int pdl_add_small_(int64_t *sum, int64_t v)
+{
+    uint64_t n = (uint64_t)*sum + (uint64_t)v;
+    *sum = pdl_i64_(n);
+    if ((uint32_t)(n >> 32) + 0x40000000u >= 0x80000000u)
+        pdl_sum_far(sum, v);
+    return 1;
+}
+
+static inline int pdl_add_u64_(int64_t *sum, uint64_t v)
+{
+    return pdl_add_int_(sum, v > (uint64_t)INT64_MAX ? INT64_MAX : (int64_t)v);
+}
+
+/* IEEE 754 binary32: exponent all ones is NaN or infinity; a biased
+ * exponent of 127 + 63 or more is a magnitude of at least 2^63. */
+static inline int pdl_add_float_(int64_t *sum, float v)
+{
+    union { float f; uint32_t u; } bits;
+    uint32_t exponent;
+    bits.f = v;
+    exponent = (bits.u >> 23) & 0xFFu;
+    if (exponent == 0xFFu)
+        return pdl_not_finite();
+    if (exponent >= 127u + 63u)
+        return pdl_add_int_(sum, (bits.u >> 31) != 0u ? INT64_MIN : INT64_MAX);
+    return pdl_add_int_(sum, (int64_t)v);
+}
+
+/* IEEE 754 binary64, as above with exponent bias 1023. */
+static inline int pdl_add_double_(int64_t *sum, double v)
+{
+    union { double d; uint64_t u; } bits;
+    uint32_t exponent;
+    bits.d = v;
+    exponent = (uint32_t)(bits.u >> 52) & 0x7FFu;
+    if (exponent == 0x7FFu)
+        return pdl_not_finite();
+    if (exponent >= 1023u + 63u)
+        return pdl_add_int_(sum, (bits.u >> 63) != 0u ? INT64_MIN : INT64_MAX);
+    return pdl_add_int_(sum, (int64_t)v);
+}
+
+/* long double's format differs between targets: compared, not dissected
+ * (v - v is NaN, so not 0, exactly when v is infinite or NaN). */
+static inline int pdl_add_ldouble_(int64_t *sum, long double v)
+{
+    if (v != v || v - v != 0.0L)
+        return pdl_not_finite();
+    if (v >= 0x1p63L)
+        return pdl_add_int_(sum, INT64_MAX);
+    if (v < -0x1p63L)
+        return pdl_add_int_(sum, INT64_MIN);
+    return pdl_add_int_(sum, (int64_t)v);
+}
 
 /* ---- processes ---- */
 typedef void (*pdl_process_fn)(void);

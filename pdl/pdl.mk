@@ -16,7 +16,13 @@ PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsche
 PDL_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/bsched
 # The example behaviours (compiled for the host here and into apps/pdl_demo for the board).
 PDL_EXAMPLE_SRCS := $(wildcard pdl/examples/*.c)
-PDL_HOST_TESTS := $(PDL_BUILD)/tests/test_pdl $(PDL_BUILD)/tests/test_behaviours
+# test_pdl twice: at -O2 (HOST_CFLAGS), which checks the values, and under
+# ASan/UBSan with no recovery, where any undefined behaviour on a tested path
+# (add_value's extremes: overflow, float-to-integer conversion) fails it.
+# GCC's -fsanitize=undefined leaves float-cast-overflow out: named here.
+PDL_SANITIZE   := -O1 -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
+PDL_HOST_TESTS := $(PDL_BUILD)/tests/test_pdl $(PDL_BUILD)/tests/test_pdl_sanitized \
+                  $(PDL_BUILD)/tests/test_behaviours
 
 ALL += $(PDL_HOST_TESTS)
 CHECKS += pdl-unit
@@ -37,6 +43,10 @@ $(PDL_HOST_LIB): $(PDL_HOST_SRCS) $(PDL_HEADERS)
 $(PDL_BUILD)/tests/test_pdl: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
+
+$(PDL_BUILD)/tests/test_pdl_sanitized: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(PDL_HOST_CFLAGS) $(PDL_SANITIZE) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
 
 $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)

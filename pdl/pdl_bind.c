@@ -67,27 +67,43 @@ static int pdl_is_declared(const struct pdl_head *h, enum pdl_kind kind)
     return h->id != 0u && h->kind == (uint8_t)kind;
 }
 
-static int pdl_bind(struct pdl_head *h, enum pdl_port port, unsigned index, int output,
-                    const char *fn)
+/* Whether h may be bound to port/index: PDL_OK or the refusal's code (not
+ * yet counted). `pending` lines of a table being checked count as bound. */
+static int pdl_bind_check(const struct pdl_head *h, enum pdl_port port, unsigned index,
+                          int output, const struct pdl_binding *pending, size_t npending)
 {
     unsigned i;
+    size_t k;
     if (h == NULL)
-        return pdl_refuse(PDL_ERR_NULL, fn);
+        return PDL_ERR_NULL;
     if (pdl_core_started())
-        return pdl_refuse(PDL_ERR_RUNNING, fn);
+        return PDL_ERR_RUNNING;
     if (!pdl_is_declared(h, output ? PDL_KIND_INT : PDL_KIND_SENSOR))
-        return pdl_refuse(PDL_ERR_UNDECLARED, fn);
+        return PDL_ERR_UNDECLARED;
     if (pdl_port_check(port, index, output) != PDL_OK)
-        return pdl_refuse(PDL_ERR_PORT, fn);
+        return PDL_ERR_PORT;
     for (i = 0; i < pdl_nbindings; i++) {
         const struct pdl_bound *b = &pdl_bindings[i];
         if (!output && b->q == h)
-            return pdl_refuse(PDL_ERR_TWICE, fn);   /* a sensor has one source */
+            return PDL_ERR_TWICE;   /* a sensor has one source */
         if (output && b->port == (uint8_t)port && b->index == index)
-            return pdl_refuse(PDL_ERR_PORT_TAKEN, fn);
+            return PDL_ERR_PORT_TAKEN;
     }
-    if (pdl_nbindings >= PDL_MAX_BINDINGS)
-        return pdl_refuse(PDL_ERR_TOO_MANY_BINDINGS, fn);
+    /* input and output ports are disjoint, so an earlier line on the same
+     * port and index is an output as well */
+    for (k = 0; k < npending; k++) {
+        if (!output && pending[k].q == h)
+            return PDL_ERR_TWICE;
+        if (output && pending[k].port == port && pending[k].index == index)
+            return PDL_ERR_PORT_TAKEN;
+    }
+    return PDL_OK;
+}
+
+/* Binds a line pdl_bind_check accepted, with room in the table. */
+static void pdl_bind_add(struct pdl_head *h, enum pdl_port port, unsigned index, int output)
+{
+    unsigned i;
     /* sensors first, so the refresh walks a prefix of the table */
     if (!output) {
         pdl_bindings[pdl_nbindings] = pdl_bindings[pdl_nsensor_bindings];
@@ -97,6 +113,17 @@ static int pdl_bind(struct pdl_head *h, enum pdl_port port, unsigned index, int 
     }
     pdl_nbindings++;
     pdl_bindings[i] = (struct pdl_bound){.q = h, .port = (uint8_t)port, .index = (uint8_t)index};
+}
+
+static int pdl_bind(struct pdl_head *h, enum pdl_port port, unsigned index, int output,
+                    const char *fn)
+{
+    int r = pdl_bind_check(h, port, index, output, NULL, 0);
+    if (r != PDL_OK)
+        return pdl_refuse(r, fn);
+    if (pdl_nbindings >= PDL_MAX_BINDINGS)
+        return pdl_refuse(PDL_ERR_TOO_MANY_BINDINGS, fn);
+    pdl_bind_add(h, port, index, output);
     return PDL_OK;
 }
 
@@ -110,23 +137,52 @@ int pdl_bind_actuator(struct pdl_quantity *q, enum pdl_port port, unsigned index
     return pdl_bind(q == NULL ? NULL : &q->head, port, index, 1, "pdl_bind_actuator");
 }
 
+/* prefix, n in decimal, suffix into buf (the board has no snprintf here). */
+static void pdl_line_message(char *buf, size_t size, const char *prefix, size_t n,
+                             const char *suffix)
+{
+    char digits[20];
+    size_t k = 0, len = 0;
+    do {
+        digits[k++] = (char)('0' + n % 10u);
+        n /= 10u;
+    } while (n != 0u && k < sizeof digits);
+    while (*prefix != '\0' && len + 1u < size)
+        buf[len++] = *prefix++;
+    while (k > 0u && len + 1u < size)
+        buf[len++] = digits[--k];
+    while (*suffix != '\0' && len + 1u < size)
+        buf[len++] = *suffix++;
+    buf[len] = '\0';
+}
+
+/* A table's line direction: by what its quantity was declared as. */
+static int pdl_line_output(const struct pdl_binding *line)
+{
+    return line->q != NULL && line->q->kind == PDL_KIND_INT;
+}
+
+/* All or nothing: every line is checked (against the bindings made before
+ * and the table's earlier lines) before the first is bound, so a refused
+ * table leaves no binding that would read a port or drive an actuator. */
 int pdl_bind_table(const struct pdl_binding *table, size_t count)
 {
+    static char what[48];
     size_t i;
+    int r = PDL_OK;
     if (table == NULL)
         return pdl_refuse(PDL_ERR_NULL, "pdl_bind_table");
-    for (i = 0; i < count; i++) {
-        struct pdl_head *h = table[i].q;
-        int r;
-        if (h != NULL && h->kind == PDL_KIND_SENSOR)
-            r = pdl_bind(h, table[i].port, table[i].index, 0, "pdl_bind_table");
-        else if (h != NULL && h->kind == PDL_KIND_INT)
-            r = pdl_bind(h, table[i].port, table[i].index, 1, "pdl_bind_table");
-        else
-            r = pdl_refuse(h == NULL ? PDL_ERR_NULL : PDL_ERR_UNDECLARED, "pdl_bind_table");
-        if (r != PDL_OK)
-            return r;
+    for (i = 0; i < count && r == PDL_OK; i++)
+        r = pdl_bind_check(table[i].q, table[i].port, table[i].index,
+                           pdl_line_output(&table[i]), table, i);
+    if (r != PDL_OK) {      /* line i (from 1) was refused */
+        pdl_line_message(what, sizeof what, "pdl_bind_table: line ", i, ", none bound");
+        return pdl_refuse(r, what);
     }
+    if (count > PDL_MAX_BINDINGS - pdl_nbindings)
+        return pdl_refuse(PDL_ERR_TOO_MANY_BINDINGS, "pdl_bind_table (none bound)");
+    for (i = 0; i < count; i++)
+        pdl_bind_add(table[i].q, table[i].port, table[i].index, pdl_line_output(&table[i]));
     return PDL_OK;
 }
 

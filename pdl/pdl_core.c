@@ -90,6 +90,7 @@ const char *pdl_strerror(int code)
     case PDL_ERR_KERNEL: return "kernel refused the cycle thread";
     case PDL_ERR_OUTSIDE_PROCESS: return "add_value outside a process";
     case PDL_ERR_TOO_MANY_BINDINGS: return "too many bindings";
+    case PDL_ERR_NOT_FINITE: return "NaN or infinite value for an integer quantity";
     default: return "unknown error";
     }
 }
@@ -255,7 +256,8 @@ int pdl_core_start(void)
 #pragma GCC push_options
 #pragma GCC optimize("O2")
 
-void pdl_pend(struct pdl_head *h)
+/* Everything but a declared integer quantity in a process (pdl_pend). */
+static void __attribute__((noinline)) pdl_pend_other(struct pdl_head *h)
 {
     /* declared quantities have an id (pdl_reset clears them) */
     if (h->id == 0u) {
@@ -272,15 +274,38 @@ void pdl_pend(struct pdl_head *h)
         (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
         return;
     }
-    if (h->kind == PDL_KIND_INT) {
-        pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
-    } else if (h->kind == PDL_KIND_FLOAT) {
+    if (h->kind == PDL_KIND_FLOAT) {
         pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
+        h->pending = 1;
     } else {    /* a sensor cast to a quantity: never committed */
         (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value (not a writable quantity)");
+    }
+}
+
+/* The usual case first and alone, as the CPU32 runs it once per quantity
+ * and cycle: a declared integer quantity's first contribution in a process. */
+void pdl_pend(struct pdl_head *h)
+{
+    if (h->kind == PDL_KIND_INT && h->id != 0u && pdl_current >= 0) {
+        pdl_pending_int[pdl_npending_int++] = (struct pdl_quantity *)(void *)h;
+        h->pending = 1;
         return;
     }
-    h->pending = 1;
+    pdl_pend_other(h);
+}
+
+void pdl_sum_far(int64_t *sum, int64_t v)
+{
+    /* the sum before the addition, exactly: the addition was modulo 2^64 */
+    int64_t before = pdl_i64_((uint64_t)*sum - (uint64_t)v);
+    (void)pdl_add_int_(&before, v);
+    *sum = before;
+}
+
+int pdl_not_finite(void)
+{
+    (void)pdl_refuse(PDL_ERR_NOT_FINITE, "add_value");
+    return 0;
 }
 
 void pdl_cycle_begin(uint32_t now_us)
@@ -319,8 +344,16 @@ int32_t pdl_cycle_run(void)
         end = pdl_plan_start[pdl_plan_t + 1u];
         ran = (int32_t)(end - k);
         pdl_plan_t = (pdl_plan_t + 1u) & pdl_plan_mask;
-        for (; k < end; k++)
-            pdl_core_run_process(NULL, pdl_plan_runs[k]);
+        /* pdl_current is set for each process and cleared once after the
+         * last: nothing but this loop runs between them (2 instructions a
+         * run on the CPU32, which pay for add_value's overflow test) */
+        for (; k < end; k++) {
+            uint8_t index = pdl_plan_runs[k];
+            pdl_current = index;
+            pdl_procs[index]();
+            pdl_last_run_us[index] = pdl_cycle_start_us;
+        }
+        pdl_current = -1;
     }
     if (ran > 0)
         pdl_stats.process_runs += (uint32_t)ran;
@@ -348,9 +381,12 @@ static void pdl_commit_int(struct pdl_quantity *q)
             cur = q->min;
         else
             cur = (int32_t)((uint32_t)cur + (uint32_t)low);
-    } else {            /* |sum| >= 2^31: rare, 64-bit */
-        int64_t w = (int64_t)cur + sum;
-        cur = w > q->max ? q->max : w < q->min ? q->min : (int32_t)w;
+    } else if (sum > 0) {   /* |sum| >= 2^31: rare, 64-bit */
+        /* compared with the distance to the bound, as cur + sum could pass
+         * INT64_MAX (the sum saturates there, add_value) */
+        cur = sum > (int64_t)q->max - cur ? q->max : (int32_t)(cur + sum);
+    } else {
+        cur = sum < (int64_t)q->min - cur ? q->min : (int32_t)(cur + sum);
     }
     q->cur = cur;
 }

@@ -136,23 +136,35 @@ static void test_bounds_and_bool(void **state)
     int32_t b;
     uint8_t data[4];
     uint32_t len;
+    int32_t len_as_bool = 2;
     char str[4];
     struct nxdr x;
     (void)state;
     nxdr_init_decode(&x, buf, 4);
+    assert_int_equal(nxdr_error(&x), NXDR_OK);
     assert_false(nxdr_bool(&x, &b));                   /* 2 is no bool */
+    assert_int_equal(nxdr_error(&x), NXDR_EVALUE);
     buf[3] = 5;
     nxdr_init_decode(&x, buf, 16);
     assert_false(nxdr_bytes(&x, data, &len, 4));       /* 5 > max 4 */
+    assert_int_equal(nxdr_error(&x), NXDR_ETOOLONG);
     nxdr_init_decode(&x, buf, 16);
     assert_false(nxdr_string(&x, str, 3));
+    assert_int_equal(nxdr_error(&x), NXDR_ETOOLONG);
+    nxdr_init_encode(&x, buf, 16);
+    assert_false(nxdr_string(&x, "four", 3));          /* encoding: longer than max */
+    assert_int_equal(nxdr_error(&x), NXDR_ETOOLONG);
+    assert_int_equal(nxdr_getpos(&x), 0);
     buf[0] = 0xFF;                                    /* huge count */
     nxdr_init_decode(&x, buf, 16);
     assert_false(nxdr_bytes(&x, data, &len, 0xFFFFFFFFu));
+    assert_int_equal(nxdr_error(&x), NXDR_ESHORT);
+    assert_non_null(strstr(nxdr_strerror(nxdr_error(&x)), "longer than the input"));
     nxdr_init_encode(&x, buf, 3);
     b = 1;
     assert_false(nxdr_int(&x, &b));                    /* no room */
-    assert_false(nxdr_int(&x, &b));                    /* stays failed */
+    assert_false(nxdr_bool(&x, &len_as_bool));         /* stays failed ... */
+    assert_int_equal(nxdr_error(&x), NXDR_ESHORT);     /* ... with the first reason */
 }
 
 int main(void)

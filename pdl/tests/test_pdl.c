@@ -2,7 +2,9 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 #include <cmocka.h>
 
@@ -151,6 +153,125 @@ static void test_clipping_at_int32_extremes(void **state)
     run_pdl();
     pdl_run_cycles(1);
     assert_int_equal(value(q_a), -1000);
+}
+
+/* ---- integer contributions at the extremes: no undefined behaviour ----
+ * This file is also built with -fsanitize=undefined,float-cast-overflow
+ * -fno-sanitize-recover (pdl.mk), so an overflow or an out-of-range
+ * conversion anywhere on these paths fails the test; the -O2 build checks
+ * the values, which such undefined behaviour used to get wrong. */
+enum contribution_kind { C_I64, C_U64, C_DOUBLE, C_FLOAT, C_LDOUBLE, C_INT };
+struct contribution { enum contribution_kind kind; int64_t i; uint64_t u; double d; };
+static struct contribution extreme[2];
+static unsigned extreme_n;
+static void add_extreme(const struct contribution *c)
+{
+    switch (c->kind) {
+    case C_I64: add_value(q_a, c->i); break;
+    case C_U64: add_value(q_a, c->u); break;
+    case C_DOUBLE: add_value(q_a, c->d); break;
+    case C_FLOAT: add_value(q_a, (float)c->d); break;
+    case C_LDOUBLE: add_value(q_a, (long double)c->d * (long double)c->d); break;
+    case C_INT: add_value(q_a, (int32_t)c->i); break;
+    }
+}
+static void extreme_first(void) { add_extreme(&extreme[0]); }
+static void extreme_second(void) { if (extreme_n > 1u) add_extreme(&extreme[1]); }
+
+/* One cycle of q_a in [min, max] from start with the contributions; the
+ * committed value, the misuse count and the last error through the out
+ * parameters. */
+static int32_t run_extreme(int32_t min, int32_t max, int32_t start, unsigned *misuse, int *last)
+{
+    struct pdl_stats st;
+    pdl_reset();
+    assert_int_equal(add_quantity(&q_a, min, max, start), PDL_OK);
+    add_process(extreme_first);
+    add_process(extreme_second);
+    assert_int_equal(run_pdl(), PDL_OK);
+    assert_int_equal(pdl_run_cycles(1), 1);
+    pdl_get_stats(&st);
+    *misuse = st.misuse;
+    *last = st.last_error;
+    return value(q_a);
+}
+
+static void test_integer_contribution_extremes(void **state)
+{
+    static const struct {
+        struct contribution c[2];
+        unsigned n;
+        int32_t min, max, start, want;
+    } cases[] = {
+        /* huge integers saturate and clip, never wrap or reverse the clip */
+        {{{C_I64, INT64_MAX, 0, 0}}, 1, -100, 100, 50, 100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_I64, INT64_MAX, 0, 0}}, 2, -100, 100, 50, 100},
+        {{{C_I64, INT64_MIN, 0, 0}}, 1, -100, 100, -50, -100},
+        {{{C_I64, INT64_MIN, 0, 0}, {C_I64, INT64_MIN, 0, 0}}, 2, -100, 100, -50, -100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_INT, 1, 0, 0}}, 2, -100, 100, 99, 100},
+        {{{C_I64, INT64_MIN, 0, 0}, {C_INT, -1, 0, 0}}, 2, -100, 100, -99, -100},
+        {{{C_I64, INT64_MAX, 0, 0}, {C_I64, INT64_MIN, 0, 0}}, 2, -100, 100, 7, 6},
+        {{{C_I64, INT64_MAX, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MAX, INT32_MAX},
+        {{{C_I64, INT64_MIN, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MIN},
+        {{{C_I64, INT64_MAX - 5, 0, 0}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MAX},
+        {{{C_U64, 0, UINT64_MAX, 0}}, 1, -100, 100, 0, 100},         /* not -1 */
+        {{{C_U64, 0, (uint64_t)INT64_MAX + 1u, 0}}, 1, -100, 100, 0, 100},
+        /* huge finite floating values saturate the same way */
+        {{{C_DOUBLE, 0, 0, 1e300}}, 1, -100, 100, 0, 100},
+        {{{C_DOUBLE, 0, 0, -1e300}}, 1, -100, 100, 0, -100},
+        {{{C_DOUBLE, 0, 0, 1e300}}, 1, INT32_MIN, INT32_MAX, INT32_MAX, INT32_MAX},
+        {{{C_DOUBLE, 0, 0, -1e300}}, 1, INT32_MIN, INT32_MAX, INT32_MIN, INT32_MIN},
+        {{{C_DOUBLE, 0, 0, 9.3e18}}, 1, -100, 100, -100, 100},       /* just past 2^63 */
+        {{{C_DOUBLE, 0, 0, -9.3e18}}, 1, -100, 100, 100, -100},
+        {{{C_DOUBLE, 0, 0, 1e300}, {C_DOUBLE, 0, 0, 1e300}}, 2, -100, 100, 0, 100},
+        {{{C_FLOAT, 0, 0, 1e30}}, 1, -100, 100, 0, 100},
+        {{{C_FLOAT, 0, 0, -1e30}}, 1, -100, 100, 0, -100},
+        {{{C_LDOUBLE, 0, 0, 1e300}}, 1, -100, 100, 0, 100},          /* 1e600L */
+        /* in range: truncated toward zero, as C converts */
+        {{{C_DOUBLE, 0, 0, 2.9}}, 1, -100, 100, 0, 2},
+        {{{C_DOUBLE, 0, 0, -2.9}}, 1, -100, 100, 0, -2},
+        {{{C_FLOAT, 0, 0, -7.5}}, 1, -100, 100, 0, -7},
+        {{{C_LDOUBLE, 0, 0, 3.0}}, 1, -100, 100, 0, 9},
+    };
+    static const double not_finite[] = {NAN, -NAN, INFINITY, -INFINITY};
+    static const enum contribution_kind floating[] = {C_DOUBLE, C_FLOAT, C_LDOUBLE};
+    unsigned i, k, misuse;
+    int last;
+    int32_t got;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        extreme[0] = cases[i].c[0];
+        extreme[1] = cases[i].c[1];
+        extreme_n = cases[i].n;
+        got = run_extreme(cases[i].min, cases[i].max, cases[i].start, &misuse, &last);
+        if (got != cases[i].want || misuse != 0u)
+            print_message("case %u: %d (want %d), misuse %u\n", i, got, cases[i].want, misuse);
+        assert_int_equal(got, cases[i].want);
+        assert_int_equal(misuse, 0);
+    }
+    /* NaN and the infinities: refused (misuse, reported), the quantity
+     * unchanged, and a valid contribution of the same cycle still counts */
+    for (i = 0; i < sizeof not_finite / sizeof not_finite[0]; i++) {
+        for (k = 0; k < sizeof floating / sizeof floating[0]; k++) {
+            extreme[0] = (struct contribution){floating[k], 0, 0, not_finite[i]};
+            extreme_n = 1;
+            if (run_extreme(-100, 100, 42, &misuse, &last) != 42 || misuse != 1u)
+                print_message("not finite %u, kind %u: misuse %u\n", i, k, misuse);
+            assert_int_equal(run_extreme(-100, 100, 42, &misuse, &last), 42);
+            assert_int_equal(misuse, 1);
+            assert_int_equal(last, PDL_ERR_NOT_FINITE);
+            assert_non_null(strstr(pdl_last_message(), "add_value"));
+            assert_non_null(strstr(pdl_last_message(), pdl_strerror(PDL_ERR_NOT_FINITE)));
+            extreme[1] = (struct contribution){C_INT, -5, 0, 0};
+            extreme_n = 2;
+            assert_int_equal(run_extreme(-100, 100, 42, &misuse, &last), 37);
+            assert_int_equal(misuse, 1);
+            /* and at the bounds: refused, not clipped to the opposite one */
+            extreme_n = 1;
+            assert_int_equal(run_extreme(-100, 100, 100, &misuse, &last), 100);
+            assert_int_equal(run_extreme(-100, 100, -100, &misuse, &last), -100);
+        }
+    }
 }
 
 /* ---- order independence: shuffle the process order, same result ---- */
@@ -573,6 +694,120 @@ static void test_misuse_of_bindings(void **state)
     expect_refused(pdl_bind_table(NULL, 1), PDL_ERR_NULL, &misuse);
 }
 
+/* ---- a refused binding table binds nothing, whichever line is bad ---- */
+static struct pdl_sensor t_light, t_bump;
+static struct pdl_quantity t_left, t_right, t_undeclared;
+static void t_drive(void)
+{
+    add_value(t_left, 300 + value(t_light));
+    add_value(t_right, -300);
+}
+
+static void test_bind_table_all_or_nothing(void **state)
+{
+    /* good lines, each a different port; a bad line goes in at every position */
+    static const struct pdl_binding good[] = {
+        {&t_light.head, PDL_ANALOG_IN, 4},
+        {&t_left.head, PDL_MOTOR, 0},
+        {&t_right.head, PDL_MOTOR, 1},
+        {&t_bump.head, PDL_BINARY_IN, 1},
+    };
+    static const struct { struct pdl_binding line; int code; } bad[] = {
+        {{&t_left.head, PDL_MOTOR, 7}, PDL_ERR_PORT},               /* no such motor */
+        {{&t_light.head, PDL_MOTOR, 2}, PDL_ERR_PORT},              /* a sensor on an output */
+        {{&t_undeclared.head, PDL_MOTOR, 2}, PDL_ERR_UNDECLARED},
+        {{NULL, PDL_MOTOR, 2}, PDL_ERR_NULL},
+        {{&t_right.head, PDL_MOTOR, 0}, PDL_ERR_PORT_TAKEN},        /* motor 0 twice in the table */
+        {{&t_light.head, PDL_ANALOG_IN, 5}, PDL_ERR_TWICE},         /* a sensor twice in the table */
+    };
+    struct pdl_binding table[5];
+    struct pdl_stats st;
+    unsigned b, pos, i, n;
+    (void)state;
+    for (b = 0; b < sizeof bad / sizeof bad[0]; b++) {
+        for (pos = 0; pos <= 4; pos++) {
+            pdl_reset();
+            assert_int_equal(add_sensor(&t_light, 0, 255), PDL_OK);
+            assert_int_equal(add_sensor(&t_bump, 0, 1), PDL_OK);
+            assert_int_equal(add_quantity(&t_left, -1000, 1000, 0), PDL_OK);
+            assert_int_equal(add_quantity(&t_right, -1000, 1000, 0), PDL_OK);
+            for (i = 0, n = 0; i < 5; i++)
+                table[i] = i == pos ? bad[b].line : good[n++];
+            if (pdl_bind_table(table, 5) != bad[b].code)
+                print_message("bad line %u at %u\n", b, pos);
+            pdl_get_stats(&st);
+            assert_int_equal(st.misuse, 1);
+            assert_int_equal(st.last_error, bad[b].code);
+            assert_non_null(strstr(pdl_last_message(), "pdl_bind_table: line "));
+            assert_non_null(strstr(pdl_last_message(), ", none bound"));
+            assert_non_null(strstr(pdl_last_message(), pdl_strerror(bad[b].code)));
+            if (b < 4u) {       /* wrong on its own: the message names its line */
+                char line[24];
+                snprintf(line, sizeof line, "line %u,", pos + 1u);
+                assert_non_null(strstr(pdl_last_message(), line));
+            }
+            /* nothing of the table was bound: no port in use ... */
+            for (i = PDL_ANALOG_IN; i < PDL_PORT_END; i++)
+                assert_false(pdl_bind_uses((enum pdl_port)i));
+            /* ... and nothing drives a motor or reads an input afterwards */
+            assert_int_equal(add_process(t_drive), 0);
+            pdl_host_set_input(PDL_ANALOG_IN, 4, 200);
+            assert_int_equal(run_pdl(), PDL_OK);
+            assert_int_equal(pdl_run_cycles(3), 3);
+            assert_int_equal(value(t_light), 0);
+            assert_int_equal(value(t_left), 900);
+            assert_int_equal(value(t_right), -900);
+            assert_int_equal(pdl_host_writes(PDL_MOTOR, 0), 0);
+            assert_int_equal(pdl_host_writes(PDL_MOTOR, 1), 0);
+            assert_int_equal(pdl_host_output(PDL_MOTOR, 0), 0);
+            assert_int_equal(pdl_host_output(PDL_MOTOR, 1), 0);
+        }
+    }
+    /* too many lines for the room left: refused whole as well */
+    pdl_reset();
+    assert_int_equal(add_sensor(&t_light, 0, 255), PDL_OK);
+    {
+        static struct pdl_quantity outs[PDL_MAX_BINDINGS];
+        static struct pdl_binding lines[PDL_MAX_BINDINGS + 1];
+        static const struct { enum pdl_port port; unsigned n; } room[] = {
+            {PDL_BIO_OUT, 16}, {PDL_FAST_OUT, 16}, {PDL_PWM, 16},
+        };
+        unsigned r;
+        lines[0] = (struct pdl_binding){&t_light.head, PDL_ANALOG_IN, 0};
+        for (r = 0, n = 1; r < 3 && n <= PDL_MAX_BINDINGS; r++)
+            for (i = 0; i < room[r].n && n <= PDL_MAX_BINDINGS; i++, n++) {
+                assert_int_equal(add_quantity(&outs[n - 1u], 0, 1, 0), PDL_OK);
+                lines[n] = (struct pdl_binding){&outs[n - 1u].head, room[r].port, i};
+            }
+        assert_int_equal(n, PDL_MAX_BINDINGS + 1);
+        assert_int_equal(pdl_bind_table(lines, n), PDL_ERR_TOO_MANY_BINDINGS);
+        for (i = PDL_ANALOG_IN; i < PDL_PORT_END; i++)
+            assert_false(pdl_bind_uses((enum pdl_port)i));
+        /* one line fewer fits, and is bound whole */
+        assert_int_equal(pdl_bind_table(lines, n - 1u), PDL_OK);
+        assert_true(pdl_bind_uses(PDL_ANALOG_IN));
+        assert_true(pdl_bind_uses(PDL_FAST_OUT));
+    }
+    /* after a refusal the corrected table binds every line */
+    pdl_reset();
+    add_sensor(&t_light, 0, 255);
+    add_sensor(&t_bump, 0, 1);
+    add_quantity(&t_left, -1000, 1000, 0);
+    add_quantity(&t_right, -1000, 1000, 0);
+    table[0] = good[0];
+    table[1] = good[1];
+    table[2] = bad[0].line;
+    assert_int_equal(pdl_bind_table(table, 3), PDL_ERR_PORT);
+    assert_int_equal(pdl_bind_table(good, 4), PDL_OK);
+    add_process(t_drive);
+    pdl_host_set_input(PDL_ANALOG_IN, 4, 200);
+    run_pdl();
+    pdl_run_cycles(1);
+    assert_int_equal(value(t_light), 200);
+    assert_int_equal(pdl_host_output(PDL_MOTOR, 0), 500);
+    assert_int_equal(pdl_host_output(PDL_MOTOR, 1), -300);
+}
+
 static void test_misuse_after_run(void **state)
 {
     static struct pdl_quantity late;
@@ -642,6 +877,7 @@ int main(void)
         cmocka_unit_test_setup(test_clipping_both_bounds, setup),
         cmocka_unit_test_setup(test_clip_applies_to_the_sum, setup),
         cmocka_unit_test_setup(test_clipping_at_int32_extremes, setup),
+        cmocka_unit_test_setup(test_integer_contribution_extremes, setup),
         cmocka_unit_test_setup(test_shuffled_order_same_result, setup),
         cmocka_unit_test_setup(test_pv_periods, setup),
         cmocka_unit_test_setup(test_recorded_plan_equals_live_bsched, setup),
@@ -652,6 +888,7 @@ int main(void)
         cmocka_unit_test_setup(test_actuator_clipped_to_port_and_driver_errors, setup),
         cmocka_unit_test_setup(test_misuse_before_run, setup),
         cmocka_unit_test_setup(test_misuse_of_bindings, setup),
+        cmocka_unit_test_setup(test_bind_table_all_or_nothing, setup),
         cmocka_unit_test_setup(test_misuse_after_run, setup),
         cmocka_unit_test_setup(test_add_value_on_undeclared_quantity, setup),
         cmocka_unit_test_setup(test_reset_and_rerun, setup),
