@@ -10,7 +10,7 @@
 #   make stack             worst-case stack of every firmware thread and the interrupt path
 #   make prove-machdeps    WP under x86_32, x86_64 and x86_16 (long)
 # Suites in make check: sanitize, bsched-edges, bsched-targets, bsched-bigendian, misra,
-# analyze, coverage, mutants-sample, stack, load-independence, cpu32-isa.
+# analyze, coverage, mutants-sample, stack, load-independence, cpu32-isa, redteam.
 
 ASSURE := $(BUILD)/assure
 ASSURE_PY := $(ROOT)/assure
@@ -138,6 +138,19 @@ check-cpu32-isa:
 	@$(MAKE) --no-print-directory $(CPU32_ISA_ELFS) $(CPU32_ISA_PROBE)
 	@$(PYTHON) $(ASSURE_PY)/cpu32_isa.py --suite cpu32-isa --expect-bad $(CPU32_ISA_PROBE) \
 	    $(CPU32_ISA_ELFS)
+
+# ---------------------------------------------------------------- red team
+# The attacks of assure/redteam.txt replayed through their regression tests:
+# make redteam all of them; the suite redteam of make check the quick ones (no
+# emulated board). Either prints 'N of M attacks handled cleanly'.
+.PHONY: redteam check-redteam
+redteam:
+	@$(SETUP) base m68k qemu
+	@$(PYTHON) $(ASSURE_PY)/redteam.py
+CHECKS += redteam
+check-redteam:
+	@$(SETUP) base m68k qemu
+	@$(PYTHON) $(ASSURE_PY)/redteam.py --quick --suite redteam
 
 # ---------------------------------------------------------------- load independence
 # table1 twice on the emulator: alone, and with every core busy; the console
