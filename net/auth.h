@@ -46,7 +46,8 @@
 
 /* FCNT = epoch << AUTH_COUNT_BITS | count: 4096 epochs (boots) of 2^20
  * frames each (at the 19 200 baud air's most, about 100 ACK-sized frames a
- * second, that is 2.9 hours of nothing but ACKs; 20 hours of full fragments). */
+ * second, that is 2.9 hours of nothing but ACKs; 22 hours of back-to-back
+ * full fragments). */
 #define AUTH_COUNT_BITS   20u
 #define AUTH_EPOCH_MAX    ((1ul << (32u - AUTH_COUNT_BITS)) - 1u)
 
