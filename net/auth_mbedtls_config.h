@@ -10,10 +10,11 @@
 #include <stddef.h>
 
 #define MBEDTLS_AES_C
-/* The AES tables as constants in flash (8.5 KB) instead of 8.5 KB of RAM
- * filled at run time: the board has 1 MB of flash and its RAM is the scarce
- * part. All four tables per direction: one table plus rotations would save
- * 6 KB of flash at the price of three rotations per table look-up. */
+/* The AES tables as constants in flash (8.5 KB) instead of 8.5 KB of .bss
+ * that the first key would have to fill at run time: the flash has room
+ * (1 MB; the images take about 25 KB), and the tables cannot be overwritten.
+ * All four tables per direction: one table each (MBEDTLS_AES_FEWER_TABLES)
+ * would save 6 KB at the price of a rotation in three of every four look-ups. */
 #define MBEDTLS_AES_ROM_TABLES
 /* CMAC is written on the generic cipher layer (cipher.c, cipher_wrap.c);
  * with no mode enabled that layer carries AES-ECB only. */
