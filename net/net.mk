@@ -242,10 +242,11 @@ $(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/auth.h
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
 $(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
-                       $(FW_BASE_OBJS) $(FW_LDSCRIPT) $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a
+                       $(FW_BASE_OBJS) $(FW_LDSCRIPT) $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a \
+                       $(CPU32_RT)
 	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) \
 	    $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
-	    $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a -lgcc
+	    $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a $(CPU32_RT)
 	$(CROSS_SIZE) $@
 
 CHECKS += net-auth net-auth-target

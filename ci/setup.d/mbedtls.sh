@@ -11,6 +11,7 @@
 #   build/mbedtls -> $BSCHED_TOOLS/mbedtls/HASH        this checkout's link
 # HASH covers this script and the configuration header, so a checkout with
 # another configuration gets its own build and never overwrites a neighbour's.
+# The source package comes through lib.sh's fetch_debian_source, as QEMU's.
 
 mbedtls_src=$BSCHED_TOOLS/mbedtls-src
 mbedtls_config=$BSCHED_ROOT/net/auth_mbedtls_config.h
@@ -39,28 +40,6 @@ apt_install dpkg-dev gcc-m68k-linux-gnu binutils-m68k-linux-gnu
 mkdir -p "$mbedtls_src"
 exec 7>"$mbedtls_src/.lock"
 flock 7
-
-# Fetches a bookworm source package through a private apt configuration (its
-# own sources list, lists and cache): the system's apt sources stay untouched.
-# The same idea as ci/setup.d/qemu.sh's fetch; a shared helper in lib.sh, when
-# there is one, is used instead.
-if ! declare -F fetch_debian_source >/dev/null; then
-    fetch_debian_source() {
-        local package=$1 dir=$2 apt_dir
-        apt_dir=$(dirname "$dir")/apt-src
-        mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
-        cat > "$apt_dir/sources.list" <<'SRC'
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian-security bookworm-security main
-SRC
-        local apt_opts=(-o "Dir::Etc::SourceList=$apt_dir/sources.list" -o Dir::Etc::SourceParts=/nonexistent
-                        -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache"
-                        -o APT::Sandbox::User=root -q)
-        apt-get "${apt_opts[@]}" update >&2
-        rm -rf "$dir" && mkdir -p "$dir"
-        (cd "$dir" && apt-get "${apt_opts[@]}" source --download-only "$package" >&2)
-    }
-fi
 
 tree=$mbedtls_src/tree
 if [ ! -f "$tree/include/mbedtls/version.h" ]; then

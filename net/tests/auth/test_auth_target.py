@@ -68,3 +68,14 @@ def test_board_cost_per_call():
     # must be about 8 block costs, not something that grew elsewhere.
     per_block = (found["seal 128"][0] - found["seal ACK"][0]) / 8
     assert 500 < per_block < 4000, per_block
+
+
+def test_board_image_is_cpu32_code_only():
+    """Mbed TLS as built by ci/setup.d/mbedtls.sh, auth.c and the runtime hold
+    no instruction the CPU32 lacks (assure/cpu32_isa.py, the scan every
+    firmware image gets): the board model would trap on one only when reached."""
+    sys.path.insert(0, os.path.join(ROOT, "assure"))
+    import cpu32_isa
+    count, bad = cpu32_isa.forbidden("m68k-linux-gnu-objdump", ELF)
+    assert count > 3000, count
+    assert bad == []
