@@ -26,8 +26,10 @@ APP_DEFAULT := ecosystem
 APP         ?= $(APP_DEFAULT)
 # Libraries every image may link: the target sources directly in these folders.
 APP_LIB_DIRS := drivers net pdl
-# Already in the firmware base objects or the kernel's own source list.
-APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS)
+# Already in the firmware base objects or the kernel's own source list, or
+# (APP_LIB_HELD_BACK, set by a part's .mk) a library source no image calls yet
+# that needs a tool the images' set-up does not install (net/auth.c: Mbed TLS).
+APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS) $(APP_LIB_HELD_BACK)
 
 include $(wildcard apps/*/app.mk)
 
