@@ -9,7 +9,8 @@
 #                           8 host peers and a board sending at once)
 #   make net-soak-fan-in    the last one long: FAN_IN_MESSAGES (20) per pair
 #   make net-interop        the host-peer-first tests INTEROP_RUNS (10) times
-#   make net-bench          goodput and latency figures (net/README.md)
+#   make net-bench          goodput and latency figures (net/README.md), with
+#                           authentication and without (its cost)
 NET_BUILD      := $(BUILD)/net
 NET_UNIT_NAMES := frame xdr link mac fec
 NET_UNIT_TESTS := $(patsubst %,$(NET_BUILD)/tests/test_%,$(NET_UNIT_NAMES))
@@ -128,6 +129,8 @@ net-bench:
 	@$(MAKE) --no-print-directory firmware APP=netnode
 	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
 	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --no-auth
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec --no-auth
 
 # ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
 #   make fuzz             frame parser, XDR decoder, FEC receiver+decoder: FUZZ_RUNS (10^7)
@@ -180,7 +183,7 @@ NET_CBMC_CHECKS := --bounds-check --pointer-check --signed-overflow-check --unsi
 # The frame receiver: one arbitrary byte from any state within the invariant
 # (an induction over sequences of any length); the CRC's 16-bit arithmetic
 # is also checked for truncating conversions.
-NET_CBMC_FRAME := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 140 \
+NET_CBMC_FRAME := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 148 \
                   --unwinding-assertions -I $(ROOT) net/proofs/frame_rx_harness.c net/frame.c net/crc16.c
 # The XDR decoder on every input of up to XDR_BOUND bytes.
 XDR_BOUND ?= 40
@@ -221,14 +224,16 @@ check-net-cbmc:
 #                               emulated board against both; its cost measured
 #   make net-auth-bench         instructions per seal and open on the board, text size
 # Mbed TLS comes from ci/setup mbedtls (build/mbedtls: the sources for the host
-# tests, the CPU32 library for the board). Until the link layer calls it,
-# net/auth.c stays out of the images' libnet.a (APP_LIB_HELD_BACK, apps/apps.mk),
-# so no image needs Mbed TLS yet.
-APP_LIB_HELD_BACK += net/auth.c
+# tests, the CPU32 library for the board); ci/setup m68k sets it up too, since
+# every image's libnet.a has net/auth.c (net.c seals and opens every frame):
+# its configuration and headers go into the images' library flags
+# (APP_LIB_CFLAGS), the CPU32 library into their link (APP_LIB_LINK).
 NET_AUTH_MBEDTLS := $(ROOT)/build/mbedtls
 NET_AUTH_MBEDTLS_NAMES := aes cipher cipher_wrap cmac constant_time platform_util
 NET_AUTH_CONFIG := -isystem $(NET_AUTH_MBEDTLS)/include -I$(ROOT)/net \
                    '-DMBEDTLS_CONFIG_FILE="auth_mbedtls_config.h"'
+APP_LIB_CFLAGS += $(NET_AUTH_CONFIG)
+APP_LIB_LINK += $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a
 # Mbed TLS for the host tests: its own sources, warnings off (they are the
 # library's, not ours), the tests' sanitizers and coverage flags kept.
 NET_AUTH_MBEDTLS_HOST := $(patsubst %,$(NET_BUILD)/auth/mbedtls/%.o,$(NET_AUTH_MBEDTLS_NAMES))

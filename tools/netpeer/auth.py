@@ -23,6 +23,10 @@ CMAC_LEN = 16
 COUNT_BITS = 20
 EPOCH_MAX = (1 << (32 - COUNT_BITS)) - 1
 
+# The public development key of net/net.h (net_auth_dev_key): the default of
+# the shell, netnode and the host peer; it protects nothing (net/README.md).
+DEV_KEY = b"bsched-dev-key!!"
+
 # net/auth.h's return codes, for the errors below and the comparison tests.
 OK, EFORGED, EREPLAY, EMALFORMED, EINVAL, EEXHAUSTED, ECRYPTO = 0, -1, -2, -3, -4, -5, -6
 
