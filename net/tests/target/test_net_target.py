@@ -133,6 +133,7 @@ def test_host_peer_cli_send_and_reply(air):
     assert board.wait_for("station 2 up", 10), board.text()
     tools = os.path.join(os.path.dirname(__file__), "..", "..", "..", "tools")
     r = subprocess.run([sys.executable, "-m", "netpeer", "--socket", air.sock, "--station", "9",
+                        "--key", DEV_KEY.hex(), "--epoch", "3",
                         "send", "2", "1", "hello cube", "--wait-reply", "10"],
                        cwd=tools, capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr

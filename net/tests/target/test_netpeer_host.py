@@ -178,6 +178,10 @@ BAD_ARGUMENTS = [
     ["send", "1"],
     ["fly"],
     [],
+    ["--key", "00" * 15, "listen", "1"],     # 15 bytes
+    ["--key", "zz" * 16, "listen", "1"],
+    ["--epoch", "4096", "listen", "1"],
+    ["--epoch", "-1", "listen", "1"],
 ]
 
 
