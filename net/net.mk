@@ -257,11 +257,10 @@ $(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/auth.c net/auth.h net/auth_mbedt
 
 # The board image: net/auth.c and the CPU32 Mbed TLS on the firmware base
 # objects (startup, polled console, kstring.c's memcpy/memset/memcmp), no
-# kernel. -D_LIBC_LIMITS_H_: check_config.h includes <limits.h>, GCC's
-# freestanding one is enough and must not pull in a C library's.
+# kernel.
 NET_AUTH_BOARD_DIR := $(NET_BUILD)/auth/board
 NET_AUTH_BOARD_ELF := $(NET_AUTH_BOARD_DIR)/auth_board.elf
-NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) -D_LIBC_LIMITS_H_ $(NET_AUTH_CONFIG)
+NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) $(NET_AUTH_CONFIG)
 $(NET_AUTH_BOARD_DIR)/%.o: net/%.c net/auth.h net/auth_mbedtls_config.h
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
@@ -280,17 +279,17 @@ CHECKS += net-auth net-auth-target
 HOST_UNIT_CHECKS += net-auth
 .PHONY: check-net-auth check-net-auth-target net-auth-bench
 check-net-auth:
-	@$(SETUP) base mbedtls
+	@$(SETUP) base m68k
 	@$(MAKE) --no-print-directory $(NET_AUTH_TEST)
 	@RESULTS=$(RESULTS) ci/cmocka-suite net-auth $(NET_AUTH_TEST)
 
 check-net-auth-target:
-	@$(SETUP) base m68k qemu mbedtls
+	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory $(NET_AUTH_SAMPLE) $(NET_AUTH_BOARD_ELF)
 	@NET_AUTH_SAMPLE=$(NET_AUTH_SAMPLE) NET_AUTH_BOARD_ELF=$(NET_AUTH_BOARD_ELF) \
 	    BSCHED_QEMU=$(QEMU_M68K) $(ROOT)/ci/pytest-suite net-auth-target $(ROOT)/net/tests/auth
 
 net-auth-bench:
-	@$(SETUP) base m68k qemu mbedtls
+	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory $(NET_AUTH_BOARD_ELF)
 	@nice -n 19 $(PYTHON) net/tests/auth/auth_measure.py $(NET_AUTH_BOARD_ELF) $(QEMU_M68K)

@@ -1,6 +1,8 @@
 # Mbed TLS 2.28 from Debian bookworm's source package, in the minimal
 # configuration of net/auth_mbedtls_config.h (AES-128 and CMAC only): the
-# primitive behind the frame authentication of net/auth.c. Sourced by ci/setup.
+# primitive behind the frame authentication of net/auth.c. Sourced by
+# ci/setup.d/m68k.sh after newlib (m68k/newlib.sh), whose headers it is
+# compiled against; `ci/setup mbedtls` alone works once `ci/setup m68k` has run.
 #
 #   $BSCHED_TOOLS/mbedtls-src/tree        the unpacked source package (never in git)
 #   $BSCHED_TOOLS/mbedtls/HASH/include    its public headers
@@ -9,8 +11,9 @@
 #                                         these with their own sanitizer flags)
 #   $BSCHED_TOOLS/mbedtls/HASH/cpu32/libmbedcrypto.a   built for the CPU32
 #   build/mbedtls -> $BSCHED_TOOLS/mbedtls/HASH        this checkout's link
-# HASH covers this script and the configuration header, so a checkout with
-# another configuration gets its own build and never overwrites a neighbour's.
+# HASH covers this script, the configuration header and the newlib build it
+# is compiled against, so a checkout with another configuration gets its own
+# build and never overwrites a neighbour's.
 # The source package comes through lib.sh's fetch_debian_source, as QEMU's.
 
 mbedtls_src=$BSCHED_TOOLS/mbedtls-src
@@ -21,8 +24,13 @@ mbedtls_link=$BSCHED_ROOT/build/mbedtls
 # constant-time comparison) and mbedtls_platform_zeroize.
 mbedtls_files="aes.c cipher.c cipher_wrap.c cmac.c constant_time.c platform_util.c"
 
-mbedtls_want=$( (sha256sum "$BSCHED_ROOT/ci/setup.d/mbedtls.sh" "$mbedtls_config" | cut -d' ' -f1) |
-                sha256sum | cut -c1-16)
+mbedtls_newlib=$(readlink -f "$BSCHED_ROOT/build/newlib" 2>/dev/null || true)
+if [ -z "$mbedtls_newlib" ] || [ ! -f "$mbedtls_newlib/include/string.h" ]; then
+    echo "ci/setup: mbedtls is compiled against newlib's headers: run ci/setup m68k" >&2
+    exit 1
+fi
+mbedtls_want=$( { sha256sum "$BSCHED_ROOT/ci/setup.d/mbedtls.sh" "$mbedtls_config" | cut -d' ' -f1;
+                  echo "$mbedtls_newlib"; } | sha256sum | cut -c1-16)
 mbedtls_dir=$BSCHED_TOOLS/mbedtls/$mbedtls_want
 
 mbedtls_link_checkout() {
@@ -62,15 +70,14 @@ cp -r "$tree/include" "$mbedtls_dir.tmp/include"
 cp "$tree"/library/*.h "$mbedtls_dir.tmp/library/"
 for f in $mbedtls_files; do cp "$tree/library/$f" "$mbedtls_dir.tmp/library/"; done
 cp "$tree/LICENSE" "$mbedtls_dir.tmp/" 2>/dev/null || true
-# The board has no C library: GCC's freestanding headers give <stddef.h>,
-# <stdint.h> and <limits.h> (-D_LIBC_LIMITS_H_ keeps GCC's limits.h from
-# including a libc's); -nostdinc keeps the cross glibc's headers out, and
-# net/auth_libc/string.h declares the memcpy/memset/memcmp that
-# kernel/lib/kstring.c defines. -fno-store-merging as kernel/firmware.mk
-# (no word stores merged at odd addresses: the CPU32 faults on them).
+# The firmware's headers (kernel/firmware.mk): GCC's and newlib's, -nostdinc
+# keeping the cross glibc's out. memcpy/memset/memcmp come from
+# kernel/lib/kstring.c at the link (every image has it), the rest of the C
+# library from newlib. -fno-store-merging as kernel/firmware.mk (no word
+# stores merged at odd addresses: the CPU32 faults on them).
 cross=m68k-linux-gnu-
 cflags=(-std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdinc -isystem "$("${cross}gcc" -print-file-name=include)"
-        -D_LIBC_LIMITS_H_ -I "$BSCHED_ROOT/net/auth_libc" -I "$BSCHED_ROOT/net"
+        -isystem "$mbedtls_newlib/include" -I "$BSCHED_ROOT/net"
         "-DMBEDTLS_CONFIG_FILE=\"auth_mbedtls_config.h\"" -I "$mbedtls_dir.tmp/include"
         -ffunction-sections -fdata-sections -fno-tree-loop-distribute-patterns -fno-store-merging -g
         -Werror=implicit-function-declaration)
