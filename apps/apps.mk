@@ -35,6 +35,9 @@ APP_LIB_DIRS := drivers net pdl
 # main-thread start-up is linked by name (NAME_BOOT), never from the archive.
 APP_BOOT_SRC := drivers/board_main.c
 APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS) $(APP_BOOT_SRC)
+# Set by a part's .mk: flags its library sources need (net/: Mbed TLS's
+# configuration and headers) and libraries they call (Mbed TLS for the CPU32),
+# linked in the group with the images' libraries and the C library.
 
 include $(wildcard apps/*/app.mk)
 
@@ -55,7 +58,7 @@ $(1)_ICOUNT  ?= $$(FW_ICOUNT)
 $(1)_BOOT    ?= board
 $(1)_DIR     := $$(FW_BUILD)/$(1)
 $(1)_FLAGS   := $$(FW_CFLAGS) -I$$(ROOT)/kernel/include -I$$(ROOT)/kernel \
-                -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)
+                -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$(APP_LIB_CFLAGS) $$($(1)_CFLAGS)
 $(1)_KOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(K_TARGET_SRCS))
 $(1)_AOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$($(1)_SRCS) \
                   $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)))
@@ -72,9 +75,9 @@ $$($(1)_DIR)/obj/%.S.o: %.S
 $$(foreach d,$$(APP_LIB_DIRS),$$(eval $$(call app_lib_template,$(1),$$(d))))
 
 $$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT) \
-                       $$(FW_LIBC_LIBS)
+                       $$(FW_LIBC_LIBS) $$(APP_LIB_LINK)
 	$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
-	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
+	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(APP_LIB_LINK) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
 	$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
 	$$(CROSS_SIZE) $$@
 

@@ -21,7 +21,7 @@ size_t fec_frame_encode(const struct frame *f, uint8_t *out, size_t size)
     uint8_t plain[FEC_CW_MAX * FEC_K];
     size_t body, ncw, i, n = 0;
     uint16_t crc = CRC16_INIT;
-    if (f->len > FRAME_PAYLOAD_MAX || fec_code.nsym != FEC_NSYM)
+    if (f->len > FRAME_AIR_PAYLOAD_MAX || fec_code.nsym != FEC_NSYM)
         return 0;
     body = FRAME_HEADER_LEN + f->len + FRAME_CRC_LEN;
     ncw = (1u + body + FEC_K - 1u) / FEC_K;

@@ -70,7 +70,7 @@ struct fec_stats {
 int fec_init(void);
 
 /* Writes the on-air bytes of f; returns their number, or 0 when
- * f->len > FRAME_PAYLOAD_MAX or out is too small. */
+ * f->len > FRAME_AIR_PAYLOAD_MAX or out is too small. */
 size_t fec_frame_encode(const struct frame *f, uint8_t *out, size_t size);
 
 void fec_rx_init(struct fec_rx *rx);

@@ -30,7 +30,7 @@ size_t frame_encode(const struct frame *f, uint8_t *out, size_t size)
     size_t n = 0;
     unsigned i;
 
-    if (f->len > FRAME_PAYLOAD_MAX || size < FRAME_PREAMBLE_LEN + 1u)
+    if (f->len > FRAME_AIR_PAYLOAD_MAX || size < FRAME_PREAMBLE_LEN + 1u)
         return 0;
     for (i = 0; i < FRAME_PREAMBLE_LEN; i++)
         out[n++] = FRAME_PREAMBLE_BYTE;

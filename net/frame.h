@@ -6,8 +6,10 @@
  * On air:  55 55 55  7E  body (byte-stuffed)  7E
  *   preamble  three 0x55 (alternating bits: the receiver's data slicer settles)
  *   flag      0x7E opens and closes the frame
- *   body      src, dst, type, seq, payload (0..FRAME_PAYLOAD_MAX bytes),
- *             CRC-16/CCITT of src..payload, high byte first
+ *   body      src, dst, type, seq, payload (0..FRAME_AIR_PAYLOAD_MAX bytes:
+ *             up to FRAME_PAYLOAD_MAX of the layers above and the
+ *             authentication trailer, net/auth.h), CRC-16/CCITT of
+ *             src..payload, high byte first
  *   stuffing  0x7E and 0x7D inside the body go out as 0x7D, byte ^ 0x20
  *             (HDLC), so a flag never occurs inside a frame and a receiver
  *             that lost track resynchronises at the next flag.
@@ -28,8 +30,10 @@
 #define FRAME_ESC_XOR       0x20u
 #define FRAME_HEADER_LEN    4u      /* src, dst, type, seq */
 #define FRAME_CRC_LEN       2u
-#define FRAME_PAYLOAD_MAX   128u
-#define FRAME_BODY_MAX      (FRAME_HEADER_LEN + FRAME_PAYLOAD_MAX + FRAME_CRC_LEN)
+#define FRAME_PAYLOAD_MAX   128u    /* what the layers above may put in a frame */
+#define FRAME_TRAILER_MAX   8u      /* the authentication trailer (AUTH_TRAILER_LEN) */
+#define FRAME_AIR_PAYLOAD_MAX (FRAME_PAYLOAD_MAX + FRAME_TRAILER_MAX)
+#define FRAME_BODY_MAX      (FRAME_HEADER_LEN + FRAME_AIR_PAYLOAD_MAX + FRAME_CRC_LEN)
 /* Longest encoding: every body byte stuffed. */
 #define FRAME_ENCODED_MAX   (FRAME_PREAMBLE_LEN + 2u + 2u * FRAME_BODY_MAX)
 
@@ -39,13 +43,13 @@
  * the CPU32 faults on word accesses at odd addresses, which GCC emits when
  * it copies structures of bytes. */
 struct frame {
-    uint16_t len;                   /* payload bytes, 0..FRAME_PAYLOAD_MAX */
+    uint16_t len;                   /* payload bytes, 0..FRAME_AIR_PAYLOAD_MAX */
     uint8_t src, dst, type, seq;
-    uint8_t payload[FRAME_PAYLOAD_MAX];
+    uint8_t payload[FRAME_AIR_PAYLOAD_MAX];   /* room for the sealed payload */
 };
 
 /* Writes the on-air bytes of f to out; returns their number, or 0 when
- * f->len > FRAME_PAYLOAD_MAX or out is too small. */
+ * f->len > FRAME_AIR_PAYLOAD_MAX or out is too small. */
 size_t frame_encode(const struct frame *f, uint8_t *out, size_t size);
 
 enum frame_rx_state { FRAME_RX_HUNT = 0, FRAME_RX_BODY, FRAME_RX_ESCAPED };

@@ -49,17 +49,37 @@ struct net_stats {
     uint32_t new_sessions;       /* peers seen restarting (a new session) */
     struct net_queue_stats txq;
     uint32_t fec_corrected, fec_failed;  /* NET_FEC: bytes corrected; frames beyond the code */
+    /* Authentication (net/auth.h): frames to us or broadcast refused before
+     * the link saw them, and our own frames not sent because sealing failed. */
+    uint32_t auth_forged, auth_replayed, auth_malformed, auth_seal_failed;
 };
 
 /* net_init_flags: forward error correction on air (fec.h). Every station of a
  * network must agree on it (a FEC frame is noise to a station without). */
 #define NET_FEC 0x1u
 
+/* Frame authentication (net/auth.h, net/README.md "Authentication"): every
+ * frame this station sends is sealed with the 16-byte network key and a
+ * counter of this boot's epoch, and every frame to it or broadcast is opened
+ * before the link sees it; forged, replayed and malformed ones are dropped
+ * and counted. epoch (0..AUTH_EPOCH_MAX) must grow from boot to boot (the
+ * station's receivers refuse a boot whose epoch did not), and epoch %
+ * LINK_SESSIONS is also the link's session (link.h). key NULL switches
+ * authentication off (only to measure its cost: every station of a network
+ * must agree, as on NET_FEC). Call before net_init_flags, which refuses to
+ * start without it: K_OK, or K_EINVAL (epoch too big, or the stack runs). */
+#define NET_AUTH_KEY_LEN 16u
+int net_auth_setup(const uint8_t *key, uint32_t epoch);
+/* The development key, "bsched-dev-key!!" (tools/netpeer/auth.py's DEV_KEY):
+ * public, in every image and in git, so it protects nothing; for the shell's
+ * `net start` and the tests. A network that wants protection needs a key of
+ * its own (netnode: patched into its NETAUTH block; net/README.md). */
+extern const uint8_t net_auth_dev_key[NET_AUTH_KEY_LEN];
+
 /* Starts the stack as station `station` (0..LINK_MAX_STATIONS-1); seed makes
- * the backoffs of different stations differ, and seed % LINK_SESSIONS is the
- * link's session (link.h), so it must differ from the station's previous
- * boot's (netnode: the host's boot counter; the shell: the tick count when
- * the user started the network). Call once after k_init. */
+ * the backoffs of different stations differ (the session comes from
+ * net_auth_setup's epoch). Call once after k_init and net_auth_setup;
+ * K_EINVAL without net_auth_setup. */
 int net_init(uint8_t station, uint32_t seed);
 /* The same with options: NET_FEC. */
 int net_init_flags(uint8_t station, uint32_t seed, unsigned flags);

@@ -9,7 +9,8 @@
 #                           8 host peers and a board sending at once)
 #   make net-soak-fan-in    the last one long: FAN_IN_MESSAGES (20) per pair
 #   make net-interop        the host-peer-first tests INTEROP_RUNS (10) times
-#   make net-bench          goodput and latency figures (net/README.md)
+#   make net-bench          goodput and latency figures (net/README.md), with
+#                           authentication and without (its cost)
 NET_BUILD      := $(BUILD)/net
 NET_UNIT_NAMES := frame xdr link mac fec
 NET_UNIT_TESTS := $(patsubst %,$(NET_BUILD)/tests/test_%,$(NET_UNIT_NAMES))
@@ -165,6 +166,8 @@ net-bench:
 	@$(MAKE) --no-print-directory firmware APP=netnode
 	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF)
 	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --no-auth
+	@nice -n 19 $(PYTHON) tools/netpeer/bench.py --elf $(NETNODE_ELF) --fec --no-auth
 
 # ---- fuzzing (libFuzzer, clang-14) and CBMC proofs ----
 #   make fuzz             frame parser, XDR decoder, FEC receiver+decoder: FUZZ_RUNS (10^7)
@@ -223,7 +226,7 @@ NET_CBMC_CHECKS := --bounds-check --pointer-check --signed-overflow-check --unsi
 # The frame receiver: one arbitrary byte from any state within the invariant
 # (an induction over sequences of any length); the CRC's 16-bit arithmetic
 # is also checked for truncating conversions.
-NET_CBMC_FRAME := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 140 \
+NET_CBMC_FRAME := --function harness $(NET_CBMC_CHECKS) --conversion-check --unwind 148 \
                   --unwinding-assertions -I $(ROOT) net/proofs/frame_rx_harness.c net/frame.c net/crc16.c
 # The XDR decoder on every input of up to XDR_BOUND bytes.
 XDR_BOUND ?= 40
@@ -269,3 +272,81 @@ check-net-cbmc:
 	    echo "$$out" | grep -E "^\*\*|VERIFICATION" | sed "s/^/net-cbmc $$run: /"; \
 	    if echo "$$out" | grep -q "VERIFICATION SUCCESSFUL"; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
 	done; $(call record,net-cbmc,$$p,$$f); [ $$f -eq 0 ]
+
+# ---- frame authentication: net/auth.c on Mbed TLS's AES-CMAC ----
+#   make check-net-auth         host unit tests (cmocka, ASan/UBSan): RFC 4493,
+#                               flipped bits, replays, the counter policy, restarts
+#   make check-net-auth-target  the host peer's MIC (Python cryptography) against
+#                               net/auth.c byte for byte; the CPU32 build on the
+#                               emulated board against both; its cost measured
+#   make net-auth-bench         instructions per seal and open on the board, text size
+# Mbed TLS comes from ci/setup mbedtls (build/mbedtls: the sources for the host
+# tests, the CPU32 library for the board); ci/setup m68k sets it up too, since
+# every image's libnet.a has net/auth.c (net.c seals and opens every frame):
+# its configuration and headers go into the images' library flags
+# (APP_LIB_CFLAGS), the CPU32 library into their link (APP_LIB_LINK).
+NET_AUTH_MBEDTLS := $(ROOT)/build/mbedtls
+NET_AUTH_MBEDTLS_NAMES := aes cipher cipher_wrap cmac constant_time platform_util
+NET_AUTH_CONFIG := -isystem $(NET_AUTH_MBEDTLS)/include -I$(ROOT)/net \
+                   '-DMBEDTLS_CONFIG_FILE="auth_mbedtls_config.h"'
+APP_LIB_CFLAGS += $(NET_AUTH_CONFIG)
+APP_LIB_LINK += $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a
+# Mbed TLS for the host tests: its own sources, warnings off (they are the
+# library's, not ours), the tests' sanitizers and coverage flags kept.
+NET_AUTH_MBEDTLS_HOST := $(patsubst %,$(NET_BUILD)/auth/mbedtls/%.o,$(NET_AUTH_MBEDTLS_NAMES))
+$(NET_BUILD)/auth/mbedtls/%.o: $(NET_AUTH_MBEDTLS)/library/%.c net/auth_mbedtls_config.h
+	@mkdir -p $(@D)
+	$(HOST_CC) $(filter-out -W% -O%,$(HOST_CFLAGS)) -O2 -w $(NET_SANITIZE) $(NET_AUTH_CONFIG) \
+	    -I$(NET_AUTH_MBEDTLS)/library -c -o $@ $<
+NET_AUTH_TEST   := $(NET_BUILD)/tests/test_auth
+NET_AUTH_SAMPLE := $(NET_BUILD)/tests/auth_sample
+$(NET_AUTH_TEST): net/tests/test_auth.c net/auth.c net/auth.h net/auth_mbedtls_config.h \
+                  $(NET_AUTH_MBEDTLS_HOST)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/test_auth.c net/auth.c \
+	    $(NET_AUTH_MBEDTLS_HOST) -lcmocka
+# The tool the Python comparison (net/tests/auth/test_auth_python.py) drives.
+$(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/auth.c net/auth.h net/auth_mbedtls_config.h \
+                    $(NET_AUTH_MBEDTLS_HOST)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/auth_sample.c net/auth.c \
+	    $(NET_AUTH_MBEDTLS_HOST)
+
+# The board image: net/auth.c and the CPU32 Mbed TLS on the firmware base
+# objects (startup, polled console, kstring.c's memcpy/memset/memcmp), no
+# kernel.
+NET_AUTH_BOARD_DIR := $(NET_BUILD)/auth/board
+NET_AUTH_BOARD_ELF := $(NET_AUTH_BOARD_DIR)/auth_board.elf
+NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) $(NET_AUTH_CONFIG)
+$(NET_AUTH_BOARD_DIR)/%.o: net/%.c net/auth.h net/auth_mbedtls_config.h
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
+$(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/auth.h
+	@mkdir -p $(@D)
+	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
+$(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
+                       $(FW_BASE_OBJS) $(FW_LDSCRIPT) $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a \
+                       $(CPU32_RT)
+	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) \
+	    $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
+	    $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a $(CPU32_RT)
+	$(CROSS_SIZE) $@
+
+CHECKS += net-auth net-auth-target
+HOST_UNIT_CHECKS += net-auth
+.PHONY: check-net-auth check-net-auth-target net-auth-bench
+check-net-auth:
+	@$(SETUP) base m68k
+	@$(MAKE) --no-print-directory $(NET_AUTH_TEST)
+	@RESULTS=$(RESULTS) ci/cmocka-suite net-auth $(NET_AUTH_TEST)
+
+check-net-auth-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory $(NET_AUTH_SAMPLE) $(NET_AUTH_BOARD_ELF)
+	@NET_AUTH_SAMPLE=$(NET_AUTH_SAMPLE) NET_AUTH_BOARD_ELF=$(NET_AUTH_BOARD_ELF) \
+	    BSCHED_QEMU=$(QEMU_M68K) $(ROOT)/ci/pytest-suite net-auth-target $(ROOT)/net/tests/auth
+
+net-auth-bench:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory $(NET_AUTH_BOARD_ELF)
+	@nice -n 19 $(PYTHON) net/tests/auth/auth_measure.py $(NET_AUTH_BOARD_ELF) $(QEMU_M68K)

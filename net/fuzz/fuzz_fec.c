@@ -39,7 +39,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             struct fec_rx rx2;
             size_t n, j;
             int got = 0;
-            if (f.len > FRAME_PAYLOAD_MAX)
+            if (f.len > FRAME_AIR_PAYLOAD_MAX)
                 abort();
             n = fec_frame_encode(&f, enc, sizeof enc);
             if (n == 0)

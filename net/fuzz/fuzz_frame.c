@@ -20,7 +20,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (frame_rx_byte(&rx, data[i], &f)) {
             struct frame_rx rx2;
             int got = 0;
-            if (f.len > FRAME_PAYLOAD_MAX)
+            if (f.len > FRAME_AIR_PAYLOAD_MAX)
                 abort();
             n = frame_encode(&f, enc, sizeof enc);
             if (n == 0)

@@ -28,5 +28,5 @@ void harness(void)
     int got = frame_rx_byte(&rx, nondet_u8(), &out);
     __CPROVER_assert(rx.n <= FRAME_BODY_MAX, "n stays within the body buffer");
     __CPROVER_assert(rx.state <= FRAME_RX_ESCAPED, "state stays valid");
-    __CPROVER_assert(!got || out.len <= FRAME_PAYLOAD_MAX, "accepted payload fits");
+    __CPROVER_assert(!got || out.len <= FRAME_AIR_PAYLOAD_MAX, "accepted payload fits");
 }

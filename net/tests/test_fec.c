@@ -136,7 +136,7 @@ static void test_fec_frame_round_trip_every_length(void **state)
     uint16_t len;
     (void)state;
     assert_int_equal(fec_init(), 0);
-    for (len = 0; len <= FRAME_PAYLOAD_MAX; len++) {
+    for (len = 0; len <= FRAME_AIR_PAYLOAD_MAX; len++) {
         struct frame f, g;
         struct fec_stats st = { 0 };
         uint8_t enc[FEC_ENCODED_MAX];
@@ -162,7 +162,7 @@ static void test_fec_frame_survives_errors(void **state)
     size_t n, i, start = FRAME_PREAMBLE_LEN + 1u;
     (void)state;
     assert_int_equal(fec_init(), 0);
-    make_frame(&f, FRAME_PAYLOAD_MAX);
+    make_frame(&f, FRAME_AIR_PAYLOAD_MAX);          /* a sealed full fragment */
     n = fec_frame_encode(&f, enc, sizeof enc);
     enc[start] = 0;
     enc[start + 2u] = 0xEE;
@@ -170,7 +170,7 @@ static void test_fec_frame_survives_errors(void **state)
     for (i = start + FEC_COPIES; i < n; i += FEC_N)
         corrupt(enc + i, FEC_N, 6);
     assert_int_equal(receive(enc, n, &g, &st), 1);
-    assert_memory_equal(g.payload, f.payload, FRAME_PAYLOAD_MAX);
+    assert_memory_equal(g.payload, f.payload, FRAME_AIR_PAYLOAD_MAX);
     assert_int_equal(st.corrected, 6u * ((n - start - FEC_COPIES) / FEC_N));
     /* seven in one codeword: the frame is refused, counted */
     n = fec_frame_encode(&f, enc, sizeof enc);

@@ -46,7 +46,8 @@ static void test_roundtrip_all_lengths(void **state)
     uint16_t len;
     (void)state;
     frame_rx_init(&rx);
-    for (len = 0; len <= FRAME_PAYLOAD_MAX; len++) {
+    /* Up to a sealed full fragment: the payload and the authentication trailer. */
+    for (len = 0; len <= FRAME_AIR_PAYLOAD_MAX; len++) {
         size_t n;
         make_frame(&f, len, (uint8_t)(0x70 + len));   /* crosses 0x7D/0x7E */
         n = frame_encode(&f, enc, sizeof enc);
@@ -58,7 +59,7 @@ static void test_roundtrip_all_lengths(void **state)
         assert_int_equal(g.len, len);
         assert_memory_equal(g.payload, f.payload, len);
     }
-    assert_int_equal(rx.stats.frames, FRAME_PAYLOAD_MAX + 1);
+    assert_int_equal(rx.stats.frames, FRAME_AIR_PAYLOAD_MAX + 1);
     assert_int_equal(rx.stats.crc_errors, 0);
 }
 
@@ -68,7 +69,7 @@ static void test_no_flag_inside(void **state)
     struct frame f;
     size_t n, i;
     (void)state;
-    make_frame(&f, FRAME_PAYLOAD_MAX, 0x7D);
+    make_frame(&f, FRAME_AIR_PAYLOAD_MAX, 0x7D);
     memset(f.payload, 0x7E, 64);
     n = frame_encode(&f, enc, sizeof enc);
     for (i = FRAME_PREAMBLE_LEN + 1; i + 1 < n; i++)
@@ -83,7 +84,7 @@ static void test_encode_refuses(void **state)
     (void)state;
     make_frame(&f, 10, 0);
     assert_int_equal(frame_encode(&f, enc, 12), 0);    /* too small a buffer */
-    f.len = FRAME_PAYLOAD_MAX + 1;
+    f.len = FRAME_AIR_PAYLOAD_MAX + 1;
     assert_int_equal(frame_encode(&f, enc, sizeof enc), 0);
 }
 

@@ -3,10 +3,12 @@ import argparse
 import sys
 
 from . import MediumTransport, Peer, SerialTransport, Unreachable
+from .auth import EPOCH_MAX, KEY_LEN
 from .peer import MAX_STATIONS
 from .protocol import BROADCAST, MSG_MAX, PACKET_DATA_MAX, PORTS
 
 USAGE = ("netpeer (--socket PATH | --serial DEVICE) --station 0-15 [--baud N] [--fec] "
+         "[--key HEX] [--epoch N] "
          "{send DST PORT TEXT [--datagram] [--wait-reply SECONDS] | "
          "listen PORT [--count N] [--timeout SECONDS]}")
 
@@ -32,6 +34,20 @@ def ranged(name, lo, hi, extra=()):
     return parse
 
 
+def hex_key():
+    """An argparse type: the network key, KEY_LEN bytes in hexadecimal."""
+    def parse(text):
+        try:
+            key = bytes.fromhex(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"key '{text}' is not hexadecimal") from None
+        if len(key) != KEY_LEN:
+            raise argparse.ArgumentTypeError(f"a key is {KEY_LEN} bytes ({2 * KEY_LEN} hex "
+                                             f"digits), not {len(key)}")
+        return key
+    return parse
+
+
 def positive_seconds():
     """An argparse type: a finite number of seconds > 0."""
     def parse(text):
@@ -53,6 +69,11 @@ def parse_args(argv):
     ap.add_argument("--station", type=ranged("station", 0, MAX_STATIONS - 1), required=True)
     ap.add_argument("--baud", type=ranged("baud", 300, 255 * 300), default=19200)
     ap.add_argument("--fec", action="store_true", help="Reed-Solomon frames (boards with NET_FEC)")
+    ap.add_argument("--key", type=hex_key(), default=None,
+                    help="the network key in hex (default: the public development key)")
+    ap.add_argument("--epoch", type=ranged("epoch", 0, EPOCH_MAX), default=None,
+                    help="this start's authentication epoch: above the last start's "
+                         "(default: random, see net/README.md)")
     sub = ap.add_subparsers(dest="cmd", required=True, parser_class=Parser)
     s = sub.add_parser("send", usage=USAGE)
     s.add_argument("dst", type=ranged("destination", 0, MAX_STATIONS - 1, (BROADCAST,)))
@@ -88,7 +109,7 @@ def main(argv=None):
     except (OSError, ValueError) as e:            # pyserial's SerialException is an OSError
         print(f"netpeer: cannot reach the air at {a.socket or a.serial}: {e}", file=sys.stderr)
         return 2
-    with Peer(t, a.station, fec=a.fec) as p:
+    with Peer(t, a.station, fec=a.fec, key=a.key, epoch=a.epoch) as p:
         if a.cmd == "send":
             try:
                 p.send(a.dst, a.port, a.text.encode(), reliable=not a.datagram)

@@ -11,6 +11,10 @@ MODES = {"soak": 1, "echo": 2, "bench": 3}
 # struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
 CONFIG = struct.Struct(">BBHHHIIBxH")
 FLAG_FEC = 0x1
+# struct netnode_auth after its magic: key[16], epoch (u32), flags, 3 reserved.
+AUTH_MAGIC = b"NETAUTH\0"
+AUTH_CONFIG = struct.Struct(">16sIB3x")
+AUTH_OFF = 0x1
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # The firmware's usual deterministic setting (2^8 ns per instruction, idle
@@ -20,14 +24,32 @@ ICOUNT = "shift=8,sleep=off"
 SYNC_NS = 500_000
 
 
+def _block(data, magic, elf):
+    at = data.find(magic)
+    if at < 0 or data.find(magic, at + 1) >= 0:
+        raise ValueError(f"{elf}: no unique {magic[:-1].decode()} configuration block")
+    return at + len(magic)
+
+
 def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, size=32,
-                 seed=1, linger_ms=3000, fec=False, boot=0):
-    """boot: this launch's number for the station (0 first): the board's link
-    session derives from seed + boot, so a restarted board must get another."""
+                 seed=1, linger_ms=3000, fec=False, boot=0, key=None, auth=True, epoch=None):
+    """boot: this launch's number for the station (0 first). The board's
+    authentication epoch is boot unless given (it must grow from boot to boot,
+    and the link's session is epoch % 64); key: the network key (16 bytes,
+    default the public development key, netpeer.auth.DEV_KEY); auth=False: no
+    authentication (every station must agree: only to measure its cost)."""
+    from .auth import DEV_KEY, EPOCH_MAX, KEY_LEN
+    key = DEV_KEY if key is None else bytes(key)
+    epoch = boot if epoch is None else epoch
+    if len(key) != KEY_LEN:
+        raise ValueError(f"a key is {KEY_LEN} bytes, not {len(key)}")
+    if not 0 <= epoch <= EPOCH_MAX:
+        raise ValueError(f"epoch {epoch} not in 0..{EPOCH_MAX}")
     data = bytearray(open(elf_in, "rb").read())
-    at = data.find(MAGIC)
-    if at < 0 or data.find(MAGIC, at + 1) >= 0:
-        raise ValueError(f"{elf_in}: no unique netnode configuration block")
+    at = _block(data, MAGIC, elf_in) - len(MAGIC)
+    auth_at = _block(data, AUTH_MAGIC, elf_in)
+    data[auth_at:auth_at + AUTH_CONFIG.size] = AUTH_CONFIG.pack(key, epoch,
+                                                                0 if auth else AUTH_OFF)
     mask = 0
     for p in peers:
         mask |= 1 << p

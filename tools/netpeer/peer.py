@@ -4,7 +4,8 @@ import queue
 import random
 import threading
 
-from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PORTS, SESSIONS, FecDecoder,
+from . import auth as netauth
+from .protocol import (ACK, BROADCAST, DATA, DGRAM, PACKET_DATA_MAX, PAYLOAD_MAX, PORTS, SESSIONS, FecDecoder,
                        Frame, FrameDecoder, Reassembly, encode_frame, encode_frame_fec,
                        frame_kind, frame_session, frame_type, fragments)
 
@@ -13,21 +14,26 @@ MAX_STATIONS = 16
 # Listen before talk (net/mac.h): slot, contention window, attempts.
 SLOT, CW_MIN, CW_MAX, MAC_ATTEMPTS = 0.003, 4, 64, 12
 
-# The last session each station number used in this process: a Peer started
-# again for the same station takes the next one, so two successive Peers
-# never share one (net/link.h, "Sessions"); the first is random, as a new
-# host process is a new boot.
-_last_session = {}
+# The last authentication epoch each station number used in this process: a
+# Peer started again for the same station takes the next one, so its frames
+# are taken at once by receivers that heard the previous Peer (net/auth.h,
+# "Restarts"), and its session, epoch % SESSIONS, differs from the previous
+# one's (net/link.h, "Sessions"). The first is random in the lower half of
+# the epochs, as a new host process is a new boot, and leaves room to grow;
+# a host process started again may draw a lower epoch than its previous one
+# and then is refused by boards that heard that one until they restart
+# (pass epoch= from a counter of your own to avoid it).
+_last_epoch = {}
 _session_lock = threading.Lock()
 
 
-def _next_session(station):
+def _next_epoch(station):
     with _session_lock:
-        last = _last_session.get(station)
-        s = int.from_bytes(os.urandom(1), "big") % SESSIONS if last is None \
-            else (last + 1) % SESSIONS
-        _last_session[station] = s
-        return s
+        last = _last_epoch.get(station)
+        e = int.from_bytes(os.urandom(2), "big") % ((netauth.EPOCH_MAX + 1) // 2) \
+            if last is None else (last + 1) % (netauth.EPOCH_MAX + 1)
+        _last_epoch[station] = e
+        return e
 
 
 class Unreachable(Exception):
@@ -35,19 +41,30 @@ class Unreachable(Exception):
 
 
 class Peer:
-    def __init__(self, transport, station, seed=None, fec=False, session=None):
+    def __init__(self, transport, station, seed=None, fec=False, session=None, key=None,
+                 epoch=None, auth=True):
         """fec: Reed-Solomon frames (net/fec.h), as boards started with NET_FEC.
-        session: this peer's session number (0..SESSIONS-1); by default one
-        that differs from the last Peer of this station in this process."""
+        key: the network key (16 bytes; default the public development key
+        netpeer.auth.DEV_KEY, as the boards'); epoch: this peer's
+        authentication epoch (0..auth.EPOCH_MAX), by default one above the
+        last Peer of this station in this process; session: the link's
+        session (0..SESSIONS-1), by default epoch % SESSIONS. auth=False: no
+        authentication, as boards started without it (only to measure it)."""
         if not 0 <= station < MAX_STATIONS:
             raise ValueError(f"station {station}: 0..{MAX_STATIONS - 1}")
         if session is not None and not 0 <= session < SESSIONS:
             raise ValueError(f"session {session}: 0..{SESSIONS - 1}")
+        if epoch is not None and not 0 <= epoch <= netauth.EPOCH_MAX:
+            raise ValueError(f"epoch {epoch}: 0..{netauth.EPOCH_MAX}")
         self.t = transport
         self.station = station
-        self.session = _next_session(station) if session is None else session
+        self.epoch = _next_epoch(station) if epoch is None else epoch
         with _session_lock:
-            _last_session[station] = self.session
+            _last_epoch[station] = self.epoch
+        self.session = self.epoch % SESSIONS if session is None else session
+        # Raises ValueError for a key of another length.
+        self.auth = netauth.Auth(netauth.DEV_KEY if key is None else key, self.epoch) \
+            if auth else None
         self.rng = random.Random(seed if seed is not None else station)
         self.decoder = FecDecoder() if fec else FrameDecoder()
         self.encode = encode_frame_fec if fec else encode_frame
@@ -65,7 +82,8 @@ class Peer:
         self.send_lock = threading.Lock()   # one reliable send at a time
         self.stats = dict(frames_sent=0, frames_received=0, retransmissions=0,
                           duplicates=0, delivered=0, unreachable=0, stale_acks=0,
-                          new_sessions=0)
+                          new_sessions=0, forged=0, replayed=0, malformed=0,
+                          seal_failed=0)
         self.running = True
         self.t.hello(station)
         self.reader = threading.Thread(target=self._read_loop, daemon=True)
@@ -84,7 +102,6 @@ class Peer:
 
     # -- air ------------------------------------------------------------------
     def _transmit(self, frame, is_ack=False, burst=False):
-        data = self.encode(frame) + b"\x55"
         with self.tx_lock:
             # Listen before talk, as net/mac.c (initial wait for data frames,
             # except a fragment right after its predecessor's ACK: link_is_burst).
@@ -94,7 +111,18 @@ class Peer:
                 if not self.t.carrier:
                     break
                 self.t.clock.sleep((1 + self.rng.randrange(min(CW_MIN << attempt, CW_MAX))) * SLOT)
-            self.t.transmit(data)
+            # Sealed last, under tx_lock: the frames reach the air in the
+            # order of their counters, and each transmission (a
+            # retransmission too) has a fresh one (net/auth.h).
+            if self.auth is not None:
+                try:
+                    frame = Frame(frame.src, frame.dst, frame.type, frame.seq,
+                                  self.auth.seal(bytes((frame.src, frame.dst, frame.type,
+                                                        frame.seq)), frame.payload))
+                except netauth.AuthError:
+                    self.stats["seal_failed"] += 1
+                    return
+            self.t.transmit(self.encode(frame) + b"\x55")
             self.stats["frames_sent"] += 1
 
     def _read_loop(self):
@@ -109,6 +137,23 @@ class Peer:
         if f.dst not in (self.station, BROADCAST) or f.src >= MAX_STATIONS or f.src == self.station:
             return
         self.stats["frames_received"] += 1
+        if self.auth is not None:
+            # Before the link: only frames sealed with the key and a counter
+            # above the source's last are seen by it (net/net.c, net_open).
+            try:
+                f = Frame(f.src, f.dst, f.type, f.seq,
+                          self.auth.open(bytes((f.src, f.dst, f.type, f.seq)), f.payload))
+            except netauth.Forged:
+                self.stats["forged"] += 1
+                return
+            except netauth.Replayed:
+                self.stats["replayed"] += 1
+                return
+            except netauth.Malformed:
+                self.stats["malformed"] += 1
+                return
+        elif len(f.payload) > PAYLOAD_MAX:
+            return                          # a sealed frame: not for a peer without auth
         kind, session = frame_kind(f.type), frame_session(f.type)
         if kind == ACK and f.dst == self.station:
             with self.ack_lock:

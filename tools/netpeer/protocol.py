@@ -5,8 +5,10 @@ from dataclasses import dataclass
 PREAMBLE = b"\x55\x55\x55"
 FLAG, ESC, ESC_XOR = 0x7E, 0x7D, 0x20
 HEADER_LEN, CRC_LEN = 4, 2
-PAYLOAD_MAX = 128
-BODY_MAX = HEADER_LEN + PAYLOAD_MAX + CRC_LEN
+PAYLOAD_MAX = 128                # what the layers above put in a frame
+TRAILER_MAX = 8                  # the authentication trailer (auth.TRAILER_LEN)
+AIR_PAYLOAD_MAX = PAYLOAD_MAX + TRAILER_MAX
+BODY_MAX = HEADER_LEN + AIR_PAYLOAD_MAX + CRC_LEN
 BROADCAST = 0xFF
 DATA, ACK, DGRAM = 1, 2, 3
 # frame.type = kind | session << SESSION_SHIFT (net/link.h, "Sessions")
@@ -56,8 +58,8 @@ def _stuff(data):
 
 
 def encode_frame(f):
-    if len(f.payload) > PAYLOAD_MAX:
-        raise ValueError(f"payload of {len(f.payload)} bytes > {PAYLOAD_MAX}")
+    if len(f.payload) > AIR_PAYLOAD_MAX:
+        raise ValueError(f"payload of {len(f.payload)} bytes > {AIR_PAYLOAD_MAX}")
     body = bytes((f.src, f.dst, f.type, f.seq)) + bytes(f.payload)
     c = crc16(body)
     return PREAMBLE + bytes((FLAG,)) + _stuff(body + bytes((c >> 8, c & 0xFF))) + bytes((FLAG,))
@@ -185,8 +187,8 @@ def _codec():
 def encode_frame_fec(f):
     """On-air bytes of f with FEC (net/fec.h): preamble, flag, the codeword
     count five times, the Reed-Solomon codewords of L + body."""
-    if len(f.payload) > PAYLOAD_MAX:
-        raise ValueError(f"payload of {len(f.payload)} bytes > {PAYLOAD_MAX}")
+    if len(f.payload) > AIR_PAYLOAD_MAX:
+        raise ValueError(f"payload of {len(f.payload)} bytes > {AIR_PAYLOAD_MAX}")
     body = bytes((f.src, f.dst, f.type, f.seq)) + bytes(f.payload)
     c = crc16(body)
     body += bytes((c >> 8, c & 0xFF))

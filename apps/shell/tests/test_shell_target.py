@@ -477,6 +477,10 @@ def test_net_statistics_and_start(shell):
     assert re.match(r"  frames sent \d+, received \d+, crc errors \d+, malformed \d+$", stats[1])
     assert re.match(r"  retransmissions \d+, collisions \d+, deferrals \d+, mac drops \d+$", stats[2])
     assert stats[3].startswith("  messages delivered 0, duplicates dropped 0, unreachable 0")
+    # On by default, with the development key (net/README.md, "Authentication").
+    assert "  radio 19200 baud, auth" in stats, stats
+    assert any(re.match(r"  auth: epoch \d+, forged 0, replayed 0, malformed 0, seal failed 0$", l)
+               for l in stats), stats
     assert "already started" in shell.error("net start 3")
 
 

@@ -8,6 +8,14 @@ import time
 from radio_medium import MSG_CLOCK, MSG_CONTROL, MSG_DATA, MSG_HELLO, MSG_PACE, MSG_SYNC  # noqa: F401
 
 
+def sealed(auth, f):
+    """Frame f with its payload sealed by auth (a netpeer.auth.Auth): what a
+    station with that key and epoch would send (net/auth.h)."""
+    from netpeer.protocol import Frame
+    return Frame(f.src, f.dst, f.type, f.seq,
+                 auth.seal(bytes((f.src, f.dst, f.type, f.seq)), f.payload))
+
+
 class Station:
     def __init__(self, sock, number):
         self.s = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)

@@ -5,11 +5,14 @@ import time
 
 import pytest
 
+import threading
+
 from netpeer import MediumTransport, Peer, Unreachable
-from netpeer.protocol import DATA, Frame, encode_frame, frame_type
+from netpeer.auth import DEV_KEY, Auth
+from netpeer.protocol import ACK, DATA, Frame, FrameDecoder, encode_frame, frame_type
 from netpeer.soak import soak_message
 
-from medium_station import MSG_PACE, Station
+from medium_station import MSG_PACE, Station, sealed
 
 
 def soak_results(text):
@@ -130,6 +133,7 @@ def test_host_peer_cli_send_and_reply(air):
     assert board.wait_for("station 2 up", 10), board.text()
     tools = os.path.join(os.path.dirname(__file__), "..", "..", "..", "tools")
     r = subprocess.run([sys.executable, "-m", "netpeer", "--socket", air.sock, "--station", "9",
+                        "--key", DEV_KEY.hex(), "--epoch", "3",
                         "send", "2", "1", "hello cube", "--wait-reply", "10"],
                        cwd=tools, capture_output=True, text=True, timeout=60)
     assert r.returncode == 0, r.stderr
@@ -171,9 +175,11 @@ def test_a_burst_from_one_station_does_not_stop_the_board(air):
     air.closers.append(raw.s.close)
     raw.pace(19200)
     raw.selects(1)
+    auth = Auth(DEV_KEY, 0)                              # the network's key: heard by the board
     burst = b"".join(
-        encode_frame(Frame(5, 1, frame_type(DATA, 0), i & 0xFF,
-                           bytes((1 if i == 40 else 3, 0x80)) + (b"echo me" if i == 40 else b"x" * 8)))
+        encode_frame(sealed(auth, Frame(5, 1, frame_type(DATA, 0), i & 0xFF,
+                                        bytes((1 if i == 40 else 3, 0x80)) +
+                                        (b"echo me" if i == 40 else b"x" * 8))))
         for i in range(300))
     raw.selects(2)
     raw.send(burst)
@@ -217,3 +223,132 @@ def test_restarted_stations_are_heard_again(air):
     assert b.session != a.session
     b.send(1, 1, b"after the restart")                  # seq 0 again
     assert b.recv(1, timeout=60) == (1, b"after the restart"), second.text()
+
+
+# ---- authentication (net/auth.h): what a station without the key cannot do ----
+
+class RawRadio:
+    """A station on the medium that speaks raw frames (no link, no key of the
+    network): it hears every frame on the air, may answer some (react(f) ->
+    on-air bytes or None) and may send what it captured."""
+
+    def __init__(self, sock, station, react=None):
+        self.t = MediumTransport(sock)
+        self.t.hello(station)
+        self.react, self.frames, self.running = react, [], True
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+
+    def _run(self):
+        decoder = FrameDecoder()
+        while self.running:
+            data = self.t.read(0.2)
+            if data is None:
+                return
+            for f in decoder.feed(data):
+                self.frames.append(f)
+                answer = self.react(f) if self.react else None
+                if answer:
+                    # Not from this thread: transmit waits for the medium's
+                    # end-of-transmission word, which this thread reads.
+                    threading.Thread(target=self.t.transmit, args=(answer + b"\x55",),
+                                     daemon=True).start()
+
+    def send(self, f):
+        self.t.transmit(encode_frame(f) + b"\x55")
+
+    def close(self):
+        self.running = False
+        self.thread.join(timeout=2)
+        self.t.close()
+
+
+def auth_counts(text):
+    m = re.search(r"auth: epoch \d+, forged (\d+), replayed (\d+), malformed (\d+)", text)
+    assert m, text
+    return tuple(map(int, m.groups()))
+
+
+def test_a_forged_data_frame_is_refused_and_counted(air):
+    """A station without the key sends an echo request under station 2's
+    address, sealed with another key: the board counts it as forged and
+    delivers nothing (it would echo to station 2, which is not there, and
+    report that). The host peer, with the key, is answered as before."""
+    air.start_medium()
+    board = air.board(1, mode="echo", linger_ms=4000)
+    assert board.wait_for("station 1 up", 10), board.text()
+    raw = RawRadio(air.sock, 5)
+    air.closers.append(raw.close)
+    raw.send(sealed(Auth(b"not the network!", 7),
+                    Frame(2, 1, frame_type(DATA, 7), 0, bytes((1, 0x80)) + b"forged echo")))
+    peer = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(peer.close)
+    peer.send(1, 1, b"genuine")
+    assert peer.recv(1, timeout=60) == (1, b"genuine"), board.text()
+    assert board.wait_for("netnode: done", 60), board.text()
+    text = board.text()
+    assert "echo to 2" not in text, text
+    assert "messages delivered 1," in text, text                # the peer's only
+    assert not any(f.src == 1 and f.dst == 2 for f in raw.frames), text   # no ACK to 2
+    assert auth_counts(text)[0] == 1, text
+
+
+def test_a_forged_ack_does_not_make_the_sender_report_success(air):
+    """The board sends a soak message to station 2, which is not there; a
+    station without the key answers each of its DATA frames at once with an
+    ACK under station 2's address, right seq and session, sealed with
+    another key. The board must count them as forged and report the send as
+    failed (unreachable), not acknowledged."""
+    air.start_medium()
+    fake = Auth(b"not the network!", 0)
+    answered = []
+
+    def ack(f):
+        if f.src == 1 and f.dst == 2 and f.type & 3 == DATA:
+            answered.append(f.seq)
+            return encode_frame(sealed(fake, Frame(2, 1, frame_type(ACK, f.type >> 2), f.seq)))
+        return None
+    raw = RawRadio(air.sock, 2, react=ack)
+    air.closers.append(raw.close)
+    board = air.board(1, mode="soak", peers=[1, 2], messages=1, linger_ms=500)
+    assert board.wait_for("netnode: done", 120), board.text()
+    text = board.text()
+    per, sent = soak_results(text)
+    assert sent == (0, 1), text
+    # Every answer the board heard intact is counted; one may collide with a
+    # retransmission (the raw station answers in wall time, without listening).
+    assert len(answered) >= 2 and 1 <= auth_counts(text)[0] <= len(answered), (answered, text)
+
+
+def test_a_replayed_data_frame_is_refused_and_counted(air):
+    """A station without the key captures the host peer's first echo request
+    (seq 0) and plays it again after the peer's second (seq 1) was taken.
+    The link alone would take it as a new message (its seq differs from the
+    last); the board must refuse it as a replay: counted, not echoed."""
+    air.start_medium()
+    board = air.board(1, mode="echo", linger_ms=6000)
+    assert board.wait_for("station 1 up", 10), board.text()
+    raw = RawRadio(air.sock, 5)
+    air.closers.append(raw.close)
+    peer = Peer(MediumTransport(air.sock), 9)
+    air.closers.append(peer.close)
+    peer.send(1, 1, b"first")
+    assert peer.recv(1, timeout=60) == (1, b"first"), board.text()
+    peer.send(1, 1, b"second")
+    assert peer.recv(1, timeout=60) == (1, b"second"), board.text()
+    captured = [f for f in raw.frames if f.src == 9 and f.dst == 1 and f.type & 3 == DATA]
+    assert captured and captured[0].seq == 0, raw.frames
+    # After the peer's ACK of the second echo, on a quiet channel: the raw
+    # station does not listen before it talks, and a collision would only
+    # make a CRC error of the replay.
+    deadline = time.monotonic() + 30
+    while sum(f.src == 9 and f.dst == 1 and f.type & 3 == ACK for f in raw.frames) < 2:
+        assert time.monotonic() < deadline, raw.frames
+        time.sleep(0.05)
+    time.sleep(0.5)
+    raw.send(captured[0])
+    assert peer.recv(1, timeout=5) is None, board.text()        # not echoed again
+    assert board.wait_for("netnode: done", 60), board.text()
+    text = board.text()
+    assert auth_counts(text)[1] == 1, text
+    assert "messages delivered 2," in text, text

@@ -9,7 +9,9 @@ import time
 
 import pytest
 
+from medium_station import sealed
 from netpeer import Peer, Unreachable
+from netpeer.auth import DEV_KEY, Auth
 from netpeer.protocol import ACK, DATA, Frame, FrameDecoder, encode_frame, frame_type
 from netpeer.transport import PeerClock
 
@@ -53,6 +55,11 @@ class LoopTransport:
         self.closed = True
 
 
+def air(f, auth):
+    """The on-air bytes of f sealed by auth (the station that sends it)."""
+    return encode_frame(sealed(auth, f))
+
+
 def wait(predicate, seconds=5):
     end = time.monotonic() + seconds
     while not predicate():
@@ -68,7 +75,7 @@ def test_an_ack_nobody_waited_for_does_not_complete_a_later_send():
     answer to that send."""
     t = LoopTransport()
     with Peer(t, 9) as peer:
-        t.inbox.put(encode_frame(Frame(4, 9, frame_type(ACK, peer.session), 0)))
+        t.inbox.put(air(Frame(4, 9, frame_type(ACK, peer.session), 0), Auth(DEV_KEY, 0)))
         wait(lambda: peer.stats["frames_received"] == 1)
         assert peer.stats["stale_acks"] == 1
         with pytest.raises(Unreachable):
@@ -85,13 +92,14 @@ def test_only_the_ack_for_the_outstanding_frame_counts():
         done = []
         threading.Thread(target=lambda: done.append(peer.send(1, 1, b"hi")), daemon=True).start()
         wait(lambda: len(t.sent) >= 1)
-        for f in (Frame(2, 9, frame_type(ACK, 5), 0),      # another station
-                  Frame(1, 9, frame_type(ACK, 5), 1),      # another seq
-                  Frame(1, 9, frame_type(ACK, 6), 0)):     # another session (an old boot's)
-            t.inbox.put(encode_frame(f))
+        one, two = Auth(DEV_KEY, 0), Auth(DEV_KEY, 0)
+        for f, a in ((Frame(2, 9, frame_type(ACK, 5), 0), two),      # another station
+                     (Frame(1, 9, frame_type(ACK, 5), 1), one),      # another seq
+                     (Frame(1, 9, frame_type(ACK, 6), 0), one)):     # another session
+            t.inbox.put(air(f, a))
         wait(lambda: peer.stats["stale_acks"] == 3)
         assert not done
-        t.inbox.put(encode_frame(Frame(1, 9, frame_type(ACK, 5), 0)))
+        t.inbox.put(air(Frame(1, 9, frame_type(ACK, 5), 0), one))
         wait(lambda: done == [None])
         assert peer.stats["unreachable"] == 0
 
@@ -102,13 +110,56 @@ def test_a_restarted_sender_is_heard_again():
     t = LoopTransport()
     with Peer(t, 9) as peer:
         for session, text in ((3, b"first boot"), (4, b"second boot")):
-            t.inbox.put(encode_frame(Frame(1, 9, frame_type(DATA, session), 0,
-                                           bytes((1, 0x80)) + text)))
+            t.inbox.put(air(Frame(1, 9, frame_type(DATA, session), 0, bytes((1, 0x80)) + text),
+                            Auth(DEV_KEY, session)))
             assert peer.recv(1, timeout=5) == (1, text)
         assert peer.stats["duplicates"] == 0 and peer.stats["new_sessions"] == 1
         acks = [f for f in FrameDecoder().feed(b"".join(t.sent))]
         assert [(f.dst, f.type, f.seq) for f in acks] == [
             (1, frame_type(ACK, 3), 0), (1, frame_type(ACK, 4), 0)]
+
+
+def test_forged_and_replayed_frames_are_refused_and_counted():
+    """A DATA frame sealed with another key is forged: no ACK, nothing
+    delivered; a good frame is taken once and its copy, re-sent as captured,
+    is refused as a replay (no second delivery, no ACK for it)."""
+    t = LoopTransport()
+    with Peer(t, 9) as peer:
+        forged = air(Frame(1, 9, frame_type(DATA, 3), 0, bytes((1, 0x80)) + b"forged"),
+                     Auth(b"not the network!", 3))
+        t.inbox.put(forged)
+        wait(lambda: peer.stats["forged"] == 1)
+        assert peer.recv(1, timeout=0.2) is None and t.sent == []
+        good = air(Frame(1, 9, frame_type(DATA, 3), 0, bytes((1, 0x80)) + b"real"),
+                   Auth(DEV_KEY, 3))
+        t.inbox.put(good)
+        assert peer.recv(1, timeout=5) == (1, b"real")
+        wait(lambda: len(t.sent) == 1)                   # its ACK
+        t.inbox.put(good)                                # captured and played again
+        wait(lambda: peer.stats["replayed"] == 1)
+        assert peer.recv(1, timeout=0.2) is None
+        assert len(t.sent) == 1 and peer.stats["duplicates"] == 0
+
+
+def test_a_forged_ack_does_not_complete_a_send():
+    """An ACK with the right station, seq and session but not sealed with
+    the key does not make the send succeed: it ends Unreachable."""
+    t = LoopTransport()
+    with Peer(t, 9) as peer:
+        errors = []
+
+        def send():
+            try:
+                peer.send(1, 1, b"hi")
+            except Unreachable as e:
+                errors.append(e)
+        th = threading.Thread(target=send, daemon=True)
+        th.start()
+        wait(lambda: len(t.sent) >= 1)
+        t.inbox.put(air(Frame(1, 9, frame_type(ACK, peer.session), 0), Auth(b"x" * 16, 0)))
+        wait(lambda: peer.stats["forged"] == 1)
+        th.join(timeout=30)
+        assert len(errors) == 1 and peer.stats["unreachable"] == 1
 
 
 BAD_ARGUMENTS = [
@@ -127,6 +178,10 @@ BAD_ARGUMENTS = [
     ["send", "1"],
     ["fly"],
     [],
+    ["--key", "00" * 15, "listen", "1"],     # 15 bytes
+    ["--key", "zz" * 16, "listen", "1"],
+    ["--epoch", "4096", "listen", "1"],
+    ["--epoch", "-1", "listen", "1"],
 ]
 
 

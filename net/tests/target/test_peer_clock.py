@@ -7,7 +7,8 @@ import time
 
 import pytest
 
-from medium_station import MSG_CLOCK, MSG_DATA, Station
+from medium_station import MSG_CLOCK, MSG_DATA, Station, sealed
+from netpeer.auth import DEV_KEY, Auth
 from netpeer import MediumTransport, Peer                      # tools/ (conftest.py)
 from netpeer.protocol import (ACK, Frame, FrameDecoder, encode_frame, frame_session,
                               frame_type)
@@ -77,6 +78,7 @@ class SlowBoard:
         self.radio.selects(1)                            # RX
         self.station, self.rate, self.ack_rounds = station, rounds_per_s, ack_rounds
         self.decoder, self.heard, self.running = FrameDecoder(), [], True
+        self.auth = Auth(DEV_KEY, 0)                     # seals its ACKs as a board would
         self.thread = threading.Thread(target=self.run, daemon=True)
         self.thread.start()
 
@@ -97,7 +99,7 @@ class SlowBoard:
                 due.remove((when, f))
                 self.radio.selects(2)                    # TX
                 ack = Frame(self.station, f.src, frame_type(ACK, frame_session(f.type)), f.seq)
-                self.radio.send(encode_frame(ack) + b"\x55")
+                self.radio.send(encode_frame(sealed(self.auth, ack)) + b"\x55")
                 self.radio.selects(1)
             time.sleep(1 / self.rate)
 

@@ -17,6 +17,8 @@ PYTHON = {
     "FRAME_HEADER_LEN": protocol.HEADER_LEN,
     "FRAME_CRC_LEN": protocol.CRC_LEN,
     "FRAME_PAYLOAD_MAX": protocol.PAYLOAD_MAX,
+    "FRAME_TRAILER_MAX": protocol.TRAILER_MAX,
+    "FRAME_AIR_PAYLOAD_MAX": protocol.AIR_PAYLOAD_MAX,
     "FRAME_BODY_MAX": protocol.BODY_MAX,
     "FRAME_BROADCAST": protocol.BROADCAST,
     "LINK_DATA": protocol.DATA,
