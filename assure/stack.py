@@ -3,8 +3,9 @@
 
 For each image in apps/*, built with -fstack-usage -fcallgraph-info=su
 (make stack builds them into build/assure/stack), this reads every .ci file
-(GCC's call graph with each function's frame size; the compiler runtime's and
-the C library's come from their builds, build/cpu32-rt/ci and build/newlib/ci), adds the assembly routines that have no .ci
+(GCC's call graph with each function's frame size; the compiler runtime's, the
+C library's and Mbed TLS's come from their builds: build/cpu32-rt/ci,
+build/newlib/ci, build/mbedtls/cpu32/ci), adds the assembly routines that have no .ci
 (fixed sizes below), and walks the graph:
 
 - a direct call adds the callee's frame plus the 4-byte return address;
@@ -137,10 +138,18 @@ def address_taken(objs, edges):
                     taken.add(sym)
             elif line.strip() and not re.match(r'\s+[0-9a-f]+:\s+([0-9a-f]{4}\s*)+$', line):
                 prev = line       # an instruction (not the continuation of one's bytes)
-        data = subprocess.run([CROSS + 'objdump', '-r', '-j', '.data', '-j', '.rodata', o],
-                              capture_output=True, text=True).stdout
-        for m in re.finditer(r'R_68K_32\s+(\S+)', data):
-            taken.add(re.sub(r'^\.text\.', '', re.sub(r'\+0x[0-9a-f]+$', '', m.group(1))))
+        # Function addresses stored in data: every .data* and .rodata* section
+        # (with -fdata-sections a table is .rodata.NAME, a section of its own).
+        section = ''
+        for line in subprocess.run([CROSS + 'objdump', '-r', o], capture_output=True,
+                                   text=True).stdout.splitlines():
+            h = re.match(r'RELOCATION RECORDS FOR \[([^\]]+)\]', line)
+            if h:
+                section = h.group(1)
+                continue
+            m = re.search(r'R_68K_32\s+(\S+)', line)
+            if m and re.match(r'\.(data|rodata)(\.|$)', section):
+                taken.add(re.sub(r'^\.text\.', '', re.sub(r'\+0x[0-9a-f]+$', '', m.group(1))))
     return taken
 
 
@@ -149,7 +158,8 @@ def linked_library_objects(map_path, into):
     map's "archive(member)" lines), extracted under `into`: their relocations
     tell which of their functions have their address taken (stdio's __swrite...)."""
     members = {}
-    for m in re.finditer(r'^(\S+/(?:libc|libm|libbuiltins)\.a)\(([^)]+\.o)\)', open(map_path).read(), re.M):
+    for m in re.finditer(r'^(\S+/(?:libc|libm|libbuiltins|libmbedcrypto)\.a)\(([^)]+\.o)\)',
+                         open(map_path).read(), re.M):
         members.setdefault(m.group(1), set()).add(m.group(2))
     objs = []
     for i, (archive, names) in enumerate(sorted(members.items())):
@@ -472,7 +482,8 @@ def main():
         cis = glob.glob(os.path.join(a.build, 'obj', '**', '*.ci'), recursive=True) + \
             glob.glob(os.path.join(a.build, app, '**', '*.ci'), recursive=True) + \
             glob.glob(os.path.join(ROOT, 'build', 'cpu32-rt', 'ci', '*.ci')) + \
-            glob.glob(os.path.join(ROOT, 'build', 'newlib', 'ci', '*.ci'))
+            glob.glob(os.path.join(ROOT, 'build', 'newlib', 'ci', '*.ci')) + \
+            glob.glob(os.path.join(ROOT, 'build', 'mbedtls', 'cpu32', 'ci', '*.ci'))
         objs = glob.glob(os.path.join(a.build, 'obj', '**', '*.o'), recursive=True) + \
             glob.glob(os.path.join(a.build, app, 'obj', '**', '*.o'), recursive=True) + \
             linked_library_objects(elf[:-4] + '.map', os.path.join(a.build, app, 'libobj'))

@@ -10,6 +10,7 @@
 #                                         internal headers (the host tests compile
 #                                         these with their own sanitizer flags)
 #   $BSCHED_TOOLS/mbedtls/HASH/cpu32/libmbedcrypto.a   built for the CPU32
+#   $BSCHED_TOOLS/mbedtls/HASH/cpu32/ci/*.ci   its call graph, for assure/stack.py
 #   build/mbedtls -> $BSCHED_TOOLS/mbedtls/HASH        this checkout's link
 # HASH covers this script, the configuration header and the newlib build it
 # is compiled against, so a checkout with another configuration gets its own
@@ -80,7 +81,8 @@ cflags=(-std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdinc -isystem "$("${cross}g
         -isystem "$mbedtls_newlib/include" -I "$BSCHED_ROOT/net"
         "-DMBEDTLS_CONFIG_FILE=\"auth_mbedtls_config.h\"" -I "$mbedtls_dir.tmp/include"
         -ffunction-sections -fdata-sections -fno-tree-loop-distribute-patterns -fno-store-merging -g
-        -Werror=implicit-function-declaration)
+        -Werror=implicit-function-declaration
+        -fstack-usage -fcallgraph-info=su)
 objs=()
 for f in $mbedtls_files; do
     o=$mbedtls_dir.tmp/cpu32/obj/${f%.c}.o
@@ -88,6 +90,10 @@ for f in $mbedtls_files; do
     objs+=("$o")
 done
 "${cross}ar" rcs "$mbedtls_dir.tmp/cpu32/libmbedcrypto.a" "${objs[@]}"
+# Each routine's frame and callees, for the worst-case stack analysis (assure/stack.py).
+mkdir -p "$mbedtls_dir.tmp/cpu32/ci"
+mv "$mbedtls_dir.tmp"/cpu32/obj/*.ci "$mbedtls_dir.tmp/cpu32/ci/"
+rm -f "$mbedtls_dir.tmp"/cpu32/obj/*.su
 touch "$mbedtls_dir.tmp/.complete"
 rm -rf "$mbedtls_dir" && mv "$mbedtls_dir.tmp" "$mbedtls_dir"
 # Keep the 4 newest builds.
