@@ -84,7 +84,7 @@ $(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/tests/xdr_sample.h net
 	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
 
 # The FEC tool the reedsolo comparison (test_fec_python.py) runs.
-$(NET_BUILD)/tests/fec_sample: net/tests/fec_sample.c net/fec.c net/fec.h net/rs.c net/rs.h net/crc16.c
+$(NET_BUILD)/tests/fec_sample: net/tests/fec_sample.c net/tests/sample_hex.h net/fec.c net/fec.h net/rs.c net/rs.h net/crc16.c
 	@mkdir -p $(@D)
 	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/fec_sample.c net/fec.c net/rs.c net/crc16.c
 
@@ -300,13 +300,13 @@ $(NET_BUILD)/auth/mbedtls/%.o: $(NET_AUTH_MBEDTLS)/library/%.c net/auth_mbedtls_
 	    -I$(NET_AUTH_MBEDTLS)/library -c -o $@ $<
 NET_AUTH_TEST   := $(NET_BUILD)/tests/test_auth
 NET_AUTH_SAMPLE := $(NET_BUILD)/tests/auth_sample
-$(NET_AUTH_TEST): net/tests/test_auth.c net/auth.c net/auth.h net/auth_mbedtls_config.h \
+$(NET_AUTH_TEST): net/tests/test_auth.c net/tests/rfc4493.h net/auth.c net/auth.h net/auth_mbedtls_config.h \
                   $(NET_AUTH_MBEDTLS_HOST)
 	@mkdir -p $(@D)
 	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/test_auth.c net/auth.c \
 	    $(NET_AUTH_MBEDTLS_HOST) -lcmocka
 # The tool the Python comparison (net/tests/auth/test_auth_python.py) drives.
-$(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/auth.c net/auth.h net/auth_mbedtls_config.h \
+$(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/tests/sample_hex.h net/auth.c net/auth.h net/auth_mbedtls_config.h \
                     $(NET_AUTH_MBEDTLS_HOST)
 	@mkdir -p $(@D)
 	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/auth_sample.c net/auth.c \
@@ -321,7 +321,7 @@ NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) $(NET_AUTH_CONFIG)
 $(NET_AUTH_BOARD_DIR)/%.o: net/%.c net/auth.h net/auth_mbedtls_config.h
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
-$(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/auth.h
+$(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/tests/rfc4493.h net/auth.h
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
 $(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \

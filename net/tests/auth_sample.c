@@ -14,22 +14,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "net/auth.h"
+#include "net/tests/sample_hex.h"
 
-static size_t unhex(const char *text, uint8_t *out, size_t size)
+/* "-" is an empty argument (the tests' empty payload). */
+static size_t unhex_or_empty(const char *text, uint8_t *out, size_t size)
 {
-    size_t i, n;
-    if (strcmp(text, "-") == 0)
-        return 0;
-    n = strlen(text) / 2u;
-    if (n > size || strlen(text) % 2u != 0u)
-        exit(2);
-    for (i = 0; i < n; i++) {
-        unsigned v;
-        if (sscanf(text + 2u * i, "%2x", &v) != 1)
-            exit(2);
-        out[i] = (uint8_t)v;
-    }
-    return n;
+    return strcmp(text, "-") == 0 ? 0 : unhex(text, out, size);
 }
 
 static void puthex(const uint8_t *b, size_t n)
@@ -58,13 +48,13 @@ int main(void)
         if (sscanf(line, "%7s", cmd) != 1)
             continue;
         if (strcmp(cmd, "key") == 0 && sscanf(line, "%*s %599s", hex) == 1) {
-            if (unhex(hex, buf, sizeof buf) != AUTH_KEY_LEN)
+            if (unhex_or_empty(hex, buf, sizeof buf) != AUTH_KEY_LEN)
                 return 2;
             printf("%d\n", net_auth_init(buf));
         } else if (strcmp(cmd, "init") == 0 && sscanf(line, "%*s %lu", &v) == 1) {
             printf("%d\n", auth_init(&st, (uint32_t)v));
         } else if (strcmp(cmd, "cmac") == 0 && sscanf(line, "%*s %599s", hex) == 1) {
-            n = unhex(hex, buf, sizeof buf);
+            n = unhex_or_empty(hex, buf, sizeof buf);
             rc = auth_cmac(buf, n, out);
             if (rc == AUTH_OK)
                 puthex(out, AUTH_CMAC_LEN);
@@ -76,7 +66,7 @@ int main(void)
             unsigned i;
             for (i = 0; i < 4; i++)
                 header[i] = (uint8_t)h[i];
-            n = unhex(hex, buf, sizeof buf);
+            n = unhex_or_empty(hex, buf, sizeof buf);
             rc = auth_mic(header, (uint32_t)v, buf, n, out);
             if (rc == AUTH_OK)
                 puthex(out, AUTH_MIC_LEN);
@@ -87,7 +77,7 @@ int main(void)
             unsigned i;
             for (i = 0; i < 4; i++)
                 header[i] = (uint8_t)h[i];
-            n = unhex(hex, buf, sizeof buf);
+            n = unhex_or_empty(hex, buf, sizeof buf);
             if (cmd[0] == 's') {
                 rc = auth_seal(&st, header, buf, n, sizeof buf);
                 if (rc >= 0)

@@ -8,20 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "net/fec.h"
-
-static size_t unhex(const char *text, uint8_t *out, size_t size)
-{
-    size_t i, n = strlen(text) / 2u;
-    if (n > size || strlen(text) % 2u != 0u)
-        exit(2);
-    for (i = 0; i < n; i++) {
-        unsigned v;
-        if (sscanf(text + 2u * i, "%2x", &v) != 1)
-            exit(2);
-        out[i] = (uint8_t)v;
-    }
-    return n;
-}
+#include "net/tests/sample_hex.h"
 
 int main(int argc, char **argv)
 {
