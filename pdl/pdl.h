@@ -347,10 +347,14 @@ struct pdl_binding {
 int pdl_bind_table(const struct pdl_binding *table, size_t count);
 
 /* ---- fixed-point help for integer quantities ---- */
-/* a * b / 2^shift, rounded toward minus infinity, without overflow. */
+/* a * b / 2^shift, rounded toward minus infinity (the arithmetic shift GCC and
+ * Clang define), saturated to the int32 range; a shift of 63 or more gives 0 or
+ * -1. Never undefined: the product is exact in 64 bits. */
 static inline int32_t pdl_mul_shift(int32_t a, int32_t b, unsigned shift)
 {
-    return (int32_t)(((int64_t)a * b) >> shift);
+    int64_t p = (int64_t)a * b;
+    p >>= shift < 63u ? shift : 63u;
+    return p > INT32_MAX ? INT32_MAX : p < INT32_MIN ? INT32_MIN : (int32_t)p;
 }
 
 #endif /* PDL_H */

@@ -529,6 +529,12 @@ static void test_mul_shift(void **state)
     assert_int_equal(pdl_mul_shift(-384, 512, 8), -768);            /* -1.5 * 2.0 */
     assert_int_equal(pdl_mul_shift(INT32_MAX, 2, 1), INT32_MAX);    /* no overflow inside */
     assert_int_equal(pdl_mul_shift(-3, 1, 1), -2);                  /* toward minus infinity */
+    /* Shifts of 64 and more (undefined for a plain >>) and results past int32. */
+    assert_int_equal(pdl_mul_shift(INT32_MAX, INT32_MAX, 64), 0);
+    assert_int_equal(pdl_mul_shift(-1, 1, 200), -1);
+    assert_int_equal(pdl_mul_shift(INT32_MAX, INT32_MAX, 0), INT32_MAX);
+    assert_int_equal(pdl_mul_shift(INT32_MIN, INT32_MAX, 1), INT32_MIN);
+    assert_int_equal(pdl_mul_shift(INT32_MIN, INT32_MIN, 62), 1);
 }
 
 /* ---- bindings: sensors from ports, actuators to ports ---- */
