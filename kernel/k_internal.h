@@ -9,6 +9,7 @@
 #define K_MAGIC_MUTEX 0x4D545831u
 #define K_MAGIC_MQ    0x4D515531u
 #define K_MAGIC_EVENT 0x45564E31u
+#define K_MAGIC_COND  0x434E4431u
 
 struct k_kernel {
     /* First: the CPU32 interrupt entry (switch.S) reads it at k_kernel + 0. */

@@ -1,5 +1,6 @@
 /*
- * Counting semaphores, mutexes with priority inheritance, event flags.
+ * Counting semaphores, mutexes with priority inheritance, condition
+ * variables, event flags.
  *
  * Hand-off: a post or unlock gives the unit or the mutex straight to the most
  * urgent waiter (FIFO among equals) before it runs, so a thread that calls
@@ -196,6 +197,84 @@ void k_mutex_release_all(struct k_thread *t)
     struct k_list_node *n;
     while ((n = k_list_first(&t->held)) != NULL)
         k_mutex_pass(K_CONTAINER_OF(n, struct k_mutex, held_node), K_EOWNERDEAD);
+}
+
+/* ---- condition variables ---- */
+
+int k_cond_init(struct k_cond *c)
+{
+    if (c == NULL)
+        return K_EINVAL;
+    k_waitq_init(&c->wq);
+    c->magic = K_MAGIC_COND;
+    return K_OK;
+}
+
+int k_cond_wait_ticks(struct k_cond *c, struct k_mutex *m, k_ticks_t timeout)
+{
+    uint32_t irq;
+    int32_t r;
+    int relock;
+    if (c == NULL || c->magic != K_MAGIC_COND || m == NULL || m->magic != K_MAGIC_MUTEX)
+        return K_EINVAL;
+    if (k_in_isr())
+        return K_EISR;
+    irq = k_arch_irq_save();
+    if (m->owner != k_kernel.current) {
+        k_arch_irq_restore(irq);
+        return K_EPERM;
+    }
+    /* The unlock and the wait are one step with interrupts masked: a signal
+     * can come only once this thread is in c's queue. */
+    k_mutex_pass(m, K_OK);
+    if (timeout == K_NO_WAIT) {
+        k_resched(); /* a waiter the unlock woke may be more urgent */
+        r = K_ETIMEDOUT;
+    } else {
+        r = k_block(&c->wq, timeout);
+    }
+    k_arch_irq_restore(irq);
+    relock = k_mutex_lock_ticks(m, K_FOREVER);
+    return relock == K_OK ? r : relock;
+}
+
+int k_cond_wait(struct k_cond *c, struct k_mutex *m)
+{
+    return k_cond_wait_ticks(c, m, K_FOREVER);
+}
+
+int k_cond_timedwait(struct k_cond *c, struct k_mutex *m, const struct k_timespec *abs_monotonic)
+{
+    k_ticks_t t;
+    int r = k_abs_to_timeout(abs_monotonic, &t);
+    return r != K_OK ? r : k_cond_wait_ticks(c, m, t);
+}
+
+static int k_cond_wake(struct k_cond *c, int all)
+{
+    uint32_t irq;
+    struct k_thread *w;
+    if (c == NULL || c->magic != K_MAGIC_COND)
+        return K_EINVAL;
+    irq = k_arch_irq_save();
+    while ((w = k_waitq_first(&c->wq)) != NULL) {
+        k_wake(w, K_OK);
+        if (!all)
+            break;
+    }
+    k_resched();
+    k_arch_irq_restore(irq);
+    return K_OK;
+}
+
+int k_cond_signal(struct k_cond *c)
+{
+    return k_cond_wake(c, 0);
+}
+
+int k_cond_broadcast(struct k_cond *c)
+{
+    return k_cond_wake(c, 1);
 }
 
 /* ---- event flags ---- */

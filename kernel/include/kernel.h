@@ -1,8 +1,9 @@
 /*
  * The bsched nanokernel: threads with static stacks, a pre-emptive
  * priority scheduler with round robin within a priority, counting
- * semaphores, owner-checked mutexes with priority inheritance, message
- * queues of fixed-size messages, event flags, monotonic time and sleeps.
+ * semaphores, owner-checked mutexes with priority inheritance, condition
+ * variables, message queues of fixed-size messages, event flags, monotonic
+ * time and sleeps.
  *
  * Names follow POSIX where POSIX has the service (k_ + the POSIX name:
  * k_sem_timedwait, k_clock_gettime, k_clock_nanosleep ...); additions take
@@ -196,6 +197,24 @@ int k_mutex_trylock(struct k_mutex *m);
 int k_mutex_timedlock(struct k_mutex *m, const struct k_timespec *abs_monotonic);
 int k_mutex_lock_ticks(struct k_mutex *m, k_ticks_t timeout);
 int k_mutex_unlock(struct k_mutex *m);
+
+/* ---- condition variables (for a mutex of the caller's) ---- */
+struct k_cond {
+    struct k_waitq wq;
+    uint32_t magic;
+};
+int k_cond_init(struct k_cond *c);
+/* Unlocks m (which the caller must own: K_EPERM otherwise) and waits on c as
+ * one step, so no signal sent after the unlock is missed; takes m again
+ * before it returns, whatever the outcome. Returns K_OK when signalled,
+ * K_ETIMEDOUT when the timeout (ticks; K_NO_WAIT times out at once) passed.
+ * Waiters are woken most urgent first, FIFO among equals. */
+int k_cond_wait_ticks(struct k_cond *c, struct k_mutex *m, k_ticks_t timeout);
+int k_cond_wait(struct k_cond *c, struct k_mutex *m);
+int k_cond_timedwait(struct k_cond *c, struct k_mutex *m, const struct k_timespec *abs_monotonic);
+/* Wakes the most urgent waiter / every waiter (none: nothing happens). */
+int k_cond_signal(struct k_cond *c);
+int k_cond_broadcast(struct k_cond *c);
 
 /* ---- message queues of fixed-size messages ---- */
 struct k_mq {

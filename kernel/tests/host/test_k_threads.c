@@ -698,6 +698,109 @@ static void *mq_consumer(void *arg)
     return NULL;
 }
 
+/* ---- condition variables ---- */
+
+static struct k_cond cnd;
+static int cond_ready;
+
+static void *cond_waiter(void *arg)
+{
+    k_mutex_lock(&mtx);
+    mark(*(const char *)arg);
+    while (!cond_ready)
+        rc[*(const char *)arg - 'A'] = k_cond_wait(&cnd, &mtx);
+    /* The mutex is held again on return. */
+    rc[4 + (*(const char *)arg - 'A')] = mtx.owner == k_thread_self();
+    mark((char)(*(const char *)arg + 32));
+    k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void *cond_signaller(void *arg)
+{
+    (void)arg;
+    k_sleep_ticks(5);
+    k_mutex_lock(&mtx);
+    cond_ready = 1;
+    mark('s');
+    rc[3] = arg == NULL ? k_cond_signal(&cnd) : k_cond_broadcast(&cnd);
+    mark('u');
+    k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void test_cond_signal_wakes_most_urgent(void **state)
+{
+    (void)state;
+    cond_ready = 0;
+    k_mutex_init(&mtx);
+    k_cond_init(&cnd);
+    spawn(0, "A", cond_waiter, "A", 8);
+    spawn(1, "B", cond_waiter, "B", 12);
+    spawn(2, "signaller", cond_signaller, NULL, 10);
+    k_start();
+    /* B (more urgent) is woken; it needs the mutex, so it runs when the
+     * signaller unlocks; A waits on. */
+    assert_string_equal(trace, "BAsub");
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(rc[5], 1);
+    assert_int_equal(rc[3], K_OK);
+    assert_int_equal(th[0].state, K_THREAD_BLOCKED);
+}
+
+static void test_cond_broadcast_wakes_all(void **state)
+{
+    (void)state;
+    cond_ready = 0;
+    k_mutex_init(&mtx);
+    k_cond_init(&cnd);
+    spawn(0, "A", cond_waiter, "A", 8);
+    spawn(1, "B", cond_waiter, "B", 12);
+    spawn(2, "signaller", cond_signaller, "all", 10);
+    k_start();
+    assert_string_equal(trace, "BAsuba");
+    assert_int_equal(rc[0], K_OK);
+    assert_int_equal(rc[1], K_OK);
+    assert_int_equal(rc[4], 1);
+    assert_int_equal(rc[5], 1);
+}
+
+static void *cond_misuser(void *arg)
+{
+    struct k_timespec past = {0, 0}, bad = {0, 1000000000};
+    (void)arg;
+    rc[0] = k_cond_wait(&cnd, &mtx);            /* mutex not held */
+    rc[1] = k_cond_wait(NULL, &mtx);
+    rc[2] = k_cond_signal(NULL);
+    k_mutex_lock(&mtx);
+    rc[3] = k_cond_wait_ticks(&cnd, &mtx, 7);   /* nobody signals */
+    when[3] = k_ticks();
+    rc[4] = mtx.owner == k_thread_self();
+    rc[5] = k_cond_timedwait(&cnd, &mtx, &past);
+    rc[6] = k_cond_timedwait(&cnd, &mtx, &bad);
+    rc[7] = mtx.owner == k_thread_self();
+    k_mutex_unlock(&mtx);
+    return NULL;
+}
+
+static void test_cond_errors_and_timeout(void **state)
+{
+    (void)state;
+    k_mutex_init(&mtx);
+    k_cond_init(&cnd);
+    spawn(0, "misuser", cond_misuser, NULL, 10);
+    k_start();
+    assert_int_equal(rc[0], K_EPERM);
+    assert_int_equal(rc[1], K_EINVAL);
+    assert_int_equal(rc[2], K_EINVAL);
+    assert_int_equal(rc[3], K_ETIMEDOUT);
+    assert_int_equal(when[3], 7);
+    assert_int_equal(rc[4], 1);
+    assert_int_equal(rc[5], K_ETIMEDOUT);
+    assert_int_equal(rc[6], K_EINVAL);
+    assert_int_equal(rc[7], 1);
+}
+
 static void test_mq_full_empty_blocking(void **state)
 {
     const uint32_t want[] = {0, 1, 2, 3, 10, 11, 12, 13, 14, 15};
@@ -1153,6 +1256,9 @@ int main(void)
         T(test_priority_inheritance),
         T(test_priority_inheritance_chain_and_timeout),
         T(test_mutex_owner_dies),
+        T(test_cond_signal_wakes_most_urgent),
+        T(test_cond_broadcast_wakes_all),
+        T(test_cond_errors_and_timeout),
         T(test_mq_full_empty_blocking),
         T(test_mq_direct_handoff_and_isr),
         T(test_events),
