@@ -299,6 +299,23 @@ void k_prio_update(struct k_thread *t)
     }
 }
 
+int k_thread_set_timeslice(struct k_thread *t, unsigned ticks)
+{
+    uint32_t s;
+    if (t == NULL || ticks > 255u)
+        return K_EINVAL;
+    s = k_arch_irq_save();
+    if (t->state == K_THREAD_UNUSED || t->state == K_THREAD_DEAD) {
+        k_arch_irq_restore(s);
+        return K_ESRCH;
+    }
+    t->timeslice = (uint8_t)ticks;
+    if (ticks != 0u && t->slice_left > ticks)
+        t->slice_left = (uint8_t)ticks;
+    k_arch_irq_restore(s);
+    return K_OK;
+}
+
 int k_thread_setprio(struct k_thread *t, unsigned prio)
 {
     uint32_t s;
@@ -331,6 +348,7 @@ static void k_thread_setup(struct k_thread *t, const char *name, k_thread_fn ent
     t->base_prio = prio;
     t->prio = prio;
     t->slice_left = K_TIMESLICE_TICKS;
+    t->timeslice = K_TIMESLICE_TICKS;
     k_list_init(&t->held);
     k_waitq_init(&t->joiners);
     for (i = 0; i < words; i++) /* guard words, and a fill that shows the high-water mark */
@@ -473,11 +491,12 @@ void k_tick(void)
     }
     while ((tn = k_tlist_pop_expired(&k_kernel.timers, now)) != NULL)
         k_wake(K_CONTAINER_OF(tn, struct k_thread, timer), K_ETIMEDOUT);
-    if (k_kernel.started && cur->state == K_THREAD_READY && cur != &k_kernel.idle) {
+    if (k_kernel.started && cur->state == K_THREAD_READY && cur != &k_kernel.idle &&
+        cur->timeslice != 0u) {
         if (cur->slice_left > 1u) {
             cur->slice_left--;
         } else {
-            cur->slice_left = K_TIMESLICE_TICKS;
+            cur->slice_left = cur->timeslice;
             (void)k_prioq_rotate(&k_kernel.ready, cur->prio);
         }
     }

@@ -111,6 +111,7 @@ struct k_thread {
     struct k_waitq joiners;
     uint32_t switches_in;        /* times this thread was switched to */
     struct k_thread *all_next;   /* every created thread, for reports */
+    uint8_t timeslice;           /* ticks per round-robin slice; 0: none (FIFO) */
     /* Last, so that a stack overflowing into this struct from above breaks it
      * first: K_THREAD_CANARY ^ the struct's address while the struct is sound.
      * Pointer-sized, so that no tail padding lies between it and what follows. */
@@ -136,6 +137,11 @@ struct k_thread *k_thread_self(void);
 int k_sched_yield(void);
 /* Sets the base priority (inherited boosts stay in force). */
 int k_thread_setprio(struct k_thread *t, unsigned prio);
+/* Sets t's round-robin slice among threads of its priority: 1..255 ticks
+ * (K_TIMESLICE_TICKS is every thread's at creation), or 0 for none, so that t
+ * runs until it blocks or yields or a more urgent thread is ready (POSIX
+ * SCHED_FIFO). Takes effect at t's next slice. */
+int k_thread_set_timeslice(struct k_thread *t, unsigned ticks);
 /* The first thread whose stack guard was found broken, or NULL. */
 struct k_thread *k_stack_overflowed(void);
 

@@ -143,6 +143,25 @@ static void test_timeslice_round_robin(void **state)
     assert_true(k_stats.context_switches >= 9u);
 }
 
+/* With no slice (SCHED_FIFO), a busy thread keeps the CPU from equals. */
+static void test_timeslice_none_is_fifo(void **state)
+{
+    (void)state;
+    spin_stop = 0;
+    memset(spin_count, 0, sizeof spin_count);
+    spawn(0, "busy0", busy, (void *)0, 5);
+    spawn(1, "busy1", busy, (void *)1, 5);
+    assert_int_equal(k_thread_set_timeslice(&th[0], 0), K_OK);
+    assert_int_equal(k_thread_set_timeslice(&th[1], 256), K_EINVAL);
+    assert_int_equal(k_thread_set_timeslice(NULL, 1), K_EINVAL);
+    assert_int_equal(k_thread_set_timeslice(&th[2], 1), K_ESRCH);
+    k_start();
+    /* busy0 spins until the stop at tick 95; busy1 runs only after that */
+    assert_true(spin_count[0] >= 90u);
+    assert_int_equal(spin_count[1], 0u);
+    assert_memory_equal(trace, "000000000", 9);
+}
+
 /* A more urgent thread that wakes from sleep pre-empts a busy one at the tick. */
 static uint32_t woke_at;
 static void *sleeper(void *arg)
@@ -1241,6 +1260,7 @@ int main(void)
         T(test_priority_order),
         T(test_create_preempts),
         T(test_timeslice_round_robin),
+        T(test_timeslice_none_is_fifo),
         T(test_preemption_of_busy_thread),
         T(test_setprio_preempts),
         T(test_yield_round_robin),
