@@ -8,7 +8,7 @@
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
 # console, PIT, LED, bsched.c: kernel/firmware.mk), the C library and the CPU32
 # compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel and the
-# libraries drivers/, net/ and pdl/ (every *.c directly in those folders; host
+# libraries drivers/, net/, pdl/ and posix/ (every *.c directly in those folders; host
 # code and tests live in their subfolders). The kernel and the libraries are
 # compiled per image at the image's tick rate and linked as archives, so an
 # image carries only the modules it calls. apps/NAME/app.mk may set:
@@ -30,7 +30,7 @@ APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk)))
 APP_DEFAULT := ecosystem
 APP         ?= $(APP_DEFAULT)
 # Libraries every image may link: the target sources directly in these folders.
-APP_LIB_DIRS := drivers net pdl
+APP_LIB_DIRS := drivers net pdl posix
 # Already in the firmware base objects or the kernel's own source list; the
 # main-thread start-up is linked by name (NAME_BOOT), never from the archive.
 APP_BOOT_SRC := drivers/board_main.c

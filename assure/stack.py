@@ -19,7 +19,9 @@ build/newlib/ci, build/mbedtls/cpu32/ci), adds the assembly routines that have n
 Threads come from the sources: every k_thread_create or board_spawn(..., ENTRY, ARG,
 STACK, SIZE, ...) and k_bsched_start(..., STACK, SIZE) (its thread runs k_bsched_main),
 plus the kernel's own idle and reporter threads; sizes from K_STACK_DEFINE and
-the #defines.
+the #defines. POSIX threads run their start routine from posix_thread_start and
+are checked at the default stack size (PTHREAD_STACK_DEFAULT): a thread given a
+smaller stack through its attributes is not.
 
 Interrupts (the model of kernel/arch/cpu32/switch.S, see ASSURANCE.md):
 - kernel-routed handlers come from the k_irq_register(VECTOR, LEVEL, HANDLER, ..)
@@ -466,7 +468,8 @@ def main():
     ap.add_argument('--suite')
     a = ap.parse_args()
     headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h')) + \
-        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'drivers/*.h'))
+        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'drivers/*.h')) + \
+        glob.glob(os.path.join(ROOT, 'posix/include/*.h'))
     ok = bad = known = at_risk = 0
     known_list = {}
     kp = os.path.join(ROOT, 'assure', 'stack-known.txt')
@@ -494,9 +497,14 @@ def main():
         linked = elf_functions(elf)
         sources = sorted(set(glob.glob(os.path.join(ROOT, 'apps', app, '*.c')) +
                              glob.glob(os.path.join(ROOT, 'kernel', '*.c')) +
-                             [f for d in ('drivers', 'net', 'pdl') for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
+                             [f for d in ('drivers', 'net', 'pdl', 'posix')
+                              for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
         defs = c_defines(headers + sources + glob.glob(os.path.join(ROOT, 'apps', app, '*.h')))
         threads = find_threads(sources + headers, defs, linked)
+        # A POSIX thread (posix_thread_start runs its start routine) has the stack
+        # its attributes give it: checked at the default size, PTHREAD_STACK_DEFAULT.
+        threads = [(n, e, evaluate('PTHREAD_STACK_DEFAULT', defs), w) if e == 'posix_thread_start'
+                   else (n, e, z, w) for n, e, z, w in threads]
         sized = {t[1] for t in threads if t[2] is not None}
         threads = [t for t in threads if t[2] is not None or t[1] not in sized]
         taken = address_taken(objs, edges) & linked

@@ -13,10 +13,17 @@ FW_MAX_PROCS := 32
 # -fno-store-merging: GCC 12 merged adjacent byte stores into a word store at an odd
 # address in net/ (an address error on the CPU32, which has no misaligned access); the
 # net code works around it, and this keeps the class of bug out of every other part.
+# The firmware's C headers: GCC's own, the POSIX layer's (posix/include: its
+# pthread types stand in for newlib's) and newlib's, in that order. The
+# feature macros make newlib's headers declare the calls of the POSIX
+# profile the layer provides (clock_gettime, clock_nanosleep, sched_yield ...).
+FW_POSIX_FEATURES := -D_POSIX_THREADS=1 -D_POSIX_TIMERS=1 -D_POSIX_MONOTONIC_CLOCK=200112L \
+                -D_POSIX_CLOCK_SELECTION=200112L -D_POSIX_PRIORITY_SCHEDULING=1
 FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched \
                 -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -ffunction-sections -fdata-sections \
                 -fno-tree-loop-distribute-patterns -fno-store-merging -MMD -MP \
-                -nostdinc -isystem $(shell $(CROSS_CC) -print-file-name=include) -isystem $(NEWLIB)/include
+                -nostdinc -isystem $(shell $(CROSS_CC) -print-file-name=include) \
+                -isystem $(ROOT)/posix/include -isystem $(NEWLIB)/include $(FW_POSIX_FEATURES)
 FW_ASFLAGS   := -mcpu=cpu32 -g -I$(ROOT)/kernel/arch/cpu32 -MMD -MP
 FW_LDSCRIPT  := kernel/arch/cpu32/robocube.ld
 FW_LDFLAGS   := -mcpu=cpu32 -nostdlib -T $(FW_LDSCRIPT) -Wl,--gc-sections -Wl,--build-id=none

@@ -58,9 +58,6 @@ void k_resched(void);
 /* Recomputes t's effective priority: base or the most urgent waiter of a
  * mutex it holds; follows the chain of mutex owners. */
 void k_prio_update(struct k_thread *t);
-/* Timeout conversion: an absolute monotonic timespec to ticks from now
- * (K_NO_WAIT if already past). Returns K_EINVAL for a bad timespec. */
-int k_abs_to_timeout(const struct k_timespec *abs, k_ticks_t *timeout);
 /* Releases the mutexes a dying thread holds (k_sync.c). */
 void k_mutex_release_all(struct k_thread *t);
 /* Called when a thread blocked on a mutex stops waiting (timeout). */

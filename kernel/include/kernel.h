@@ -70,6 +70,9 @@ int k_sleep_ticks(k_ticks_t ticks);
 int k_sleep_until(k_ticks_t deadline);
 /* Converts, rounding up. */
 k_ticks_t k_ms_to_ticks(uint32_t ms);
+/* An absolute monotonic time as a timeout in ticks from now, for the calls
+ * that take ticks: K_NO_WAIT once it has passed. K_EINVAL for a bad timespec. */
+int k_abs_to_timeout(const struct k_timespec *abs, k_ticks_t *timeout);
 
 /* ---- threads ---- */
 enum k_thread_state {
