@@ -85,6 +85,10 @@ static uintptr_t k_canary_of(const struct k_thread *t)
     return (uintptr_t)K_THREAD_CANARY ^ (uintptr_t)t;
 }
 
+/* A stack placed right after a control block (struct k_bsched does so) must
+ * stay 4-byte aligned, which k_thread_create requires. */
+typedef char k_thread_size_is_a_multiple_of_4[sizeof(struct k_thread) % 4u == 0u ? 1 : -1];
+
 static int k_tcb_intact(const struct k_thread *t)
 {
     return t->canary == k_canary_of(t);

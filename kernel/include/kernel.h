@@ -103,6 +103,9 @@ struct k_thread {
     uint8_t prio;                /* effective: base or inherited */
     uint8_t state;               /* enum k_thread_state */
     uint8_t slice_left;          /* ticks left in the round-robin slice */
+    uint8_t timeslice;           /* ticks per round-robin slice; 0: none (FIFO) */
+    uint8_t reserved[3];         /* keeps the block a multiple of 4 bytes long, so a
+                                  * stack placed right after it stays aligned */
     struct k_waitq *waitq;       /* queue blocked on, or NULL */
     struct k_mutex *wait_mutex;  /* mutex blocked on (priority inheritance) */
     struct k_list_node held;     /* mutexes held, for priority inheritance */
@@ -114,7 +117,6 @@ struct k_thread {
     struct k_waitq joiners;
     uint32_t switches_in;        /* times this thread was switched to */
     struct k_thread *all_next;   /* every created thread, for reports */
-    uint8_t timeslice;           /* ticks per round-robin slice; 0: none (FIFO) */
     /* Last, so that a stack overflowing into this struct from above breaks it
      * first: K_THREAD_CANARY ^ the struct's address while the struct is sound.
      * Pointer-sized, so that no tail padding lies between it and what follows. */
