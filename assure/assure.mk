@@ -159,7 +159,7 @@ check-redteam:
 check-load-independence:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=table1
-	@$(ASSURE_PY)/load_independence.py --qemu $(QEMU_M68K) --elf $(call app_elf,table1) \
+	@$(PYTHON) $(ASSURE_PY)/load_independence.py --qemu $(QEMU_M68K) --elf $(call app_elf,table1) \
 	    --icount $(FW_ICOUNT) --until 'table1 done at tick' --suite load-independence
 
 # ---------------------------------------------------------------- WP step limits

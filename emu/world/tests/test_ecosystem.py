@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from conftest import WORLD
+from .conftest import WORLD
 
 RUN = os.path.join(WORLD, "run.py")
 # make check runs a shorter survival span on the board; make eco-survival the full 600 s.
