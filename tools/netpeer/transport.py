@@ -3,9 +3,11 @@ import socket
 import threading
 import time
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE, MSG_CLOCK = 0, 1, 2, 4, 5
-SEL_RX, SEL_TX = 1, 2
-CLOCK_UNIT = 10e-6            # seconds per unit of the medium's 05 k
+# The medium's message codes and select bits, defined once, by the medium.
+from robocube_emu.radio_medium import (CLOCK_UNIT_NS, MSG_CLOCK, MSG_CONTROL, MSG_DATA,
+                                       MSG_HELLO, MSG_PACE, SEL_RX, SEL_TX)
+
+CLOCK_UNIT = CLOCK_UNIT_NS / 1e9   # seconds per unit of the medium's 05 k
 
 
 class PeerClock:
