@@ -26,6 +26,17 @@ ICOUNT = "shift=8,sleep=off"
 SYNC_NS = 500_000
 
 
+def stop_process(proc):
+    """Asks proc to end (SIGTERM), kills it after 5 s, and reaps it."""
+    if proc.poll() is None:
+        proc.terminate()
+        try:
+            proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
+
+
 def _block(data, magic, elf):
     at = data.find(magic)
     if at < 0 or data.find(magic, at + 1) >= 0:
@@ -120,13 +131,7 @@ class Board:
         raise RuntimeError("no pty for channel A:\n" + self.text())
 
     def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
+        stop_process(self.proc)
 
 
 class MediumProcess:
@@ -162,9 +167,4 @@ class MediumProcess:
         return dict(kv.split("=") for kv in self.control("stats").split())
 
     def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
+        stop_process(self.proc)
