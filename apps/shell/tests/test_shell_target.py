@@ -460,7 +460,7 @@ def test_absent_chip_and_stuck_bus_answer_errors_and_the_shell_goes_on(shell):
 
 
 def test_net_statistics_and_start(shell):
-    """`net` prints the radio stack's counters (issue 11's shell command); the
+    """`net` prints the radio stack's counters (the radio stack's shell command); the
     stack runs only after `net start N`, once, with N a station number."""
     assert shell.one("net") == "net: not started (net start STATION)"
     for bad in ("net bogus", "net start", "net start 256", "net start x", "net start 1 2"):

@@ -1,6 +1,6 @@
 """The ecosystem end to end, through run.py (what make run starts): the
 robot program on the emulated board in lockstep with the world, and the same
-program on the host (fast mode). Goals of issue 13: survival with recharges
+program on the host (fast mode). Goals (emu/world/README.md): survival with recharges
 and no wall collisions after the first minute, reproducible trajectories."""
 import json
 import os
