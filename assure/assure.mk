@@ -160,7 +160,10 @@ CHECKS += tracker-refs
 .PHONY: check-tracker-refs
 check-tracker-refs:
 	@$(SETUP) base
-	@$(PYTHON) $(ASSURE_PY)/tracker_refs.py --suite tracker-refs
+	@out=$$($(PYTHON) $(ASSURE_PY)/tracker_refs.py); rc=$$?; echo "$$out"; \
+	counts=$$(echo "$$out" | tail -1); \
+	$(call record,tracker-refs,$$(echo "$$counts" | cut -d' ' -f1),$$(echo "$$counts" | cut -d' ' -f3)); \
+	[ $$rc -eq 0 ]
 
 # ---------------------------------------------------------------- load independence
 # table1 twice on the emulator: alone, and with every core busy; the console
