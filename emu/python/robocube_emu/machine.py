@@ -63,32 +63,29 @@ class SerialPort:
         """Waits (wall time) until marker appears; returns everything up to and
         including it and keeps the rest. step: called between polls (e.g. to
         advance the qtest clock)."""
-        deadline = time.monotonic() + timeout
-        while True:
-            self.poll()
+        def end():
             idx = self.received.find(marker)
-            if idx >= 0:
-                out = bytes(self.received[:idx + len(marker)])
-                del self.received[:idx + len(marker)]
-                return out
-            if time.monotonic() > deadline:
-                raise TimeoutError(f"serial {self.name}: {marker!r} not seen in "
-                                   f"{timeout} s; got {bytes(self.received)!r}")
-            if step:
-                step()
-            else:
-                time.sleep(0.01)
+            return idx + len(marker) if idx >= 0 else -1
+        return self._take(end, f"{marker!r} not seen in {timeout} s", timeout, step)
 
     def read_exactly(self, count, timeout=10.0, step=None):
+        """Waits until count bytes have come; returns them and keeps the rest."""
+        return self._take(lambda: count if len(self.received) >= count else -1,
+                          f"wanted {count} bytes", timeout, step)
+
+    def _take(self, end, failure, timeout, step):
+        """Polls (calling step, or sleeping 10 ms, in between) until end() gives
+        how many received bytes to return, or raises TimeoutError after timeout s."""
         deadline = time.monotonic() + timeout
         while True:
             self.poll()
-            if len(self.received) >= count:
-                out = bytes(self.received[:count])
-                del self.received[:count]
+            n = end()
+            if n >= 0:
+                out = bytes(self.received[:n])
+                del self.received[:n]
                 return out
             if time.monotonic() > deadline:
-                raise TimeoutError(f"serial {self.name}: wanted {count} bytes, "
+                raise TimeoutError(f"serial {self.name}: {failure}; "
                                    f"got {bytes(self.received)!r}")
             if step:
                 step()
