@@ -30,6 +30,7 @@ from .qmp import QMPLink
 
 SERIAL_NAMES = ("console", "radio", "sci")
 SYPCR = 0xFFFA21
+QMP_REPLY_TIMEOUT = 120.0     # seconds of wall time one QMP answer may take
 
 
 class QTestError(RuntimeError):
@@ -146,7 +147,10 @@ class Machine:
                            for name, lst in zip(SERIAL_NAMES, serial_listeners)]
             if self.qtest_enabled:
                 self._qtest = self._accept(qtest_listener, timeout)
-            self.qmp = QMPLink(sock=self._accept(qmp_listener, timeout))
+            # A reply may be slow on a loaded host (once 30 s at a load average
+            # of 20 on 2 cores); QMP_REPLY_TIMEOUT bounds the wait all the same.
+            self.qmp = QMPLink(sock=self._accept(qmp_listener, timeout),
+                               timeout=QMP_REPLY_TIMEOUT)
             if self.qtest_enabled and disable_watchdog:
                 self.writeb(SYPCR, 0x00)
         except BaseException:
