@@ -48,7 +48,7 @@ PROOF_CHECKS :=
 include bsched/bsched.mk
 -include $(sort $(wildcard bsched/proofs/*/*.mk))
 -include $(sort $(wildcard kernel/*.mk drivers/*.mk net/*.mk pdl/*.mk emu/*.mk tools/*.mk))
-# Assurance (issue 15): its checks run over every part above and every image.
+# Assurance (ASSURANCE.md): its checks run over every part above and every image.
 -include $(sort $(wildcard assure/*.mk))
 # Firmware images last: they use the kernel's and the libraries' source lists.
 include apps/apps.mk

@@ -1,4 +1,4 @@
-# Assurance evidence (issue 15, ASSURANCE.md): mutation testing, MISRA C:2012,
+# Assurance evidence (ASSURANCE.md): mutation testing, MISRA C:2012,
 # static analysis, the portability matrix, sanitizers, coverage, worst-case stack
 # and load independence. Everything here is generic: it works on whatever C the
 # tree holds (every suite in HOST_UNIT_CHECKS, every image in apps/*).
@@ -10,7 +10,8 @@
 #   make stack             worst-case stack of every firmware thread and the interrupt path
 #   make prove-machdeps    WP under x86_32, x86_64 and x86_16 (long)
 # Suites in make check: sanitize, bsched-edges, bsched-targets, bsched-bigendian, misra,
-# analyze, coverage, mutants-sample, stack, load-independence, cpu32-isa, redteam.
+# analyze, coverage, mutants-sample, stack, load-independence, cpu32-isa, redteam,
+# tracker-refs.
 
 ASSURE := $(BUILD)/assure
 ASSURE_PY := $(ROOT)/assure
@@ -152,6 +153,18 @@ check-redteam:
 	@$(SETUP) base m68k qemu
 	@$(PYTHON) $(ASSURE_PY)/redteam.py --quick --suite redteam
 
+# ---------------------------------------------------------------- tracker references
+# No issue numbers and no paths outside the repository in any tracked file
+# (assure/tracker_refs.py, under a second).
+CHECKS += tracker-refs
+.PHONY: check-tracker-refs
+check-tracker-refs:
+	@$(SETUP) base
+	@out=$$($(PYTHON) $(ASSURE_PY)/tracker_refs.py); rc=$$?; echo "$$out"; \
+	counts=$$(echo "$$out" | tail -1); \
+	$(call record,tracker-refs,$$(echo "$$counts" | cut -d' ' -f1),$$(echo "$$counts" | cut -d' ' -f3)); \
+	[ $$rc -eq 0 ]
+
 # ---------------------------------------------------------------- load independence
 # table1 twice on the emulator: alone, and with every core busy; the console
 # output must be identical, tick for tick.
@@ -159,7 +172,7 @@ check-redteam:
 check-load-independence:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=table1
-	@$(ASSURE_PY)/load_independence.py --qemu $(QEMU_M68K) --elf $(call app_elf,table1) \
+	@$(PYTHON) $(ASSURE_PY)/load_independence.py --qemu $(QEMU_M68K) --elf $(call app_elf,table1) \
 	    --icount $(FW_ICOUNT) --until 'table1 done at tick' --suite load-independence
 
 # ---------------------------------------------------------------- WP step limits

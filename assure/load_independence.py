@@ -16,6 +16,8 @@ import subprocess
 import sys
 import time
 
+import robocube_emu
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 
 
@@ -28,9 +30,8 @@ def spin(stop):
 def run(qemu, elf, icount, until, timeout):
     """Boots the image with the console on stdio; returns (output, wall seconds)."""
     start = time.time()
-    p = subprocess.Popen([qemu, '-M', 'robocube', '-icount', icount, '-kernel', elf,
-                          '-display', 'none', '-monitor', 'none', '-serial', 'stdio'],
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+    p = robocube_emu.popen(['-serial', 'stdio'], kernel=elf, icount=icount, qemu=qemu,
+                           stderr=subprocess.STDOUT)
     out = b''
     pat = re.compile(until.encode())
     try:

@@ -17,8 +17,9 @@ import re
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.dirname(__file__))
-from mutants import tokenize  # noqa: E402  (the same C tokenizer: comments and ACSL skipped)
+# The same C tokenizer as the mutants (comments and ACSL skipped); mutants.py is
+# beside this script, and a script's folder is first on its path.
+from mutants import tokenize
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), '..'))
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mutation testing of bsched/bsched.c (issue 15).
+"""Mutation testing of bsched/bsched.c.
 
 Generates mutants of the C code (never of the ACSL in comments, never of the
 BSCHED_MUTANT_NO_REVERSE variant), skips those that do not compile, and runs

@@ -1,4 +1,4 @@
-# The ecosystem (issue 13): the world simulation and the lockstep
+# The ecosystem: the world simulation and the lockstep
 # co-simulation (emu/world/), the ecosystem firmware (apps/ecosystem/) and
 # the host fast mode's library. See emu/world/README.md.
 #

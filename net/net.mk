@@ -1,5 +1,5 @@
 # The radio network stack (net/), its host peer (tools/netpeer) and the medium
-# (emu/radio_medium.py).
+# (emu/python/robocube_emu/radio_medium.py).
 #   make check-net-unit     cmocka tests of every layer, under ASan/UBSan
 #   make check-net-target   boards on the medium: 2 and 3 stations, the host
 #                           peer both ways, a faulty medium, a station that leaves,

@@ -94,7 +94,7 @@ static void radio_isr(uint8_t pending, void *arg)
         radio_tx_chars();
 }
 
-/* 19200 baud (issue 11's default) for channel A: baud-rate set 2 has it
+/* 19200 baud (the radio's default, net/README.md) for channel A: baud-rate set 2 has it
  * (code 0xC) when the console chose set 2; set 1 has not, so then the
  * counter/timer clocks channel A (CSR code 0xD, preload 6: X1 / 12 =
  * 16 x 19200). Only if the counter/timer is taken as well, 9600 from set 1. */

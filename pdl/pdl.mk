@@ -52,13 +52,13 @@ $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SR
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
-# The README's complete example ("Programming with PDL"), extracted and run.
+# pdl/README.md's complete example ("A complete program"), extracted and run.
 PDL_README_TEST := $(PDL_BUILD)/tests/readme_example
-$(PDL_BUILD)/readme_example.c: README.md
+$(PDL_BUILD)/readme_example.c: pdl/README.md
 	@mkdir -p $(@D)
-	awk '/^## Programming with PDL/ { s = 1 } s && /^```c$$/ { c = 1; next } \
-	     c && /^```$$/ { exit } c { print }' README.md > $@
-	@test -s $@ || { echo "no C example under 'Programming with PDL' in README.md"; exit 1; }
+	awk '/^## A complete program/ { s = 1 } s && /^```c$$/ { c = 1; next } \
+	     c && /^```$$/ { exit } c { print }' pdl/README.md > $@
+	@test -s $@ || { echo "no C example under 'A complete program' in pdl/README.md"; exit 1; }
 $(PDL_README_TEST): pdl/tests/readme_main.c $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
 	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)

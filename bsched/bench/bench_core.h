@@ -4,7 +4,7 @@
  *
  * Cases: N = 9 is the paper's Table 1 set (pv 1 1 1 2 2 3 4 4 4); every other N
  * draws pv uniformly from 3..12 with a fixed linear congruential generator
- * (the distribution of issue 14's figures: about U = 0.25 N / 10 processes due
+ * (the distribution of the speed goals' figures: about U = 0.25 N / 10 processes due
  * per cycle, 6.4 at N = 256, 102 at N = 4096). Each case plans the set with
  * bsched_init, starts Fig. 7's reference engine (bsched/ref/bsched_fig7.c) on
  * the plan and runs the same `cycles` minor cycles with Fig. 7

@@ -1,4 +1,4 @@
-# The certified core as a drop-in bundle (issue 14).
+# The certified core as a drop-in bundle.
 #   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, the WP and CBMC
 #                    proof jobs, unit tests, a README for embedders and a standalone
 #                    Makefile (bsched/dist/Makefile) whose make prove / make cbmc run

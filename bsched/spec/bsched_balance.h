@@ -7,7 +7,7 @@
  * Hence every cycle runs between floor(U) and ceil(U) processes, U = total_area / 2^31
  * (lemma_balance: no_idle, bounded_load).
  *
- * The steps (../../shared/notes/why-b-schedules-are-balanced.md):
+ * The steps (bsched/proofs/README.md, how the balance theorem is proven):
  *   lemma_below_step    below(k, r, x + 1) = below(k, r, x) + [x mod 2^k == r]
  *   lemma_hits          hits(k, b, c, r) = below(k, r, b + c) - below(k, r, b)
  *                       (quantified over c <= 2^31 - 1: a lemma function proves an

@@ -8,7 +8,7 @@
  * turns each recursive definition into its defining equations) and lemmas
  * that WP proves like any other goal.
  *
- * Names follow ../../shared/notes/why-b-schedules-are-balanced.md:
+ * Names follow the hand proof (bsched/proofs/README.md, the balance theorem):
  *   pow2(k)                 2^k
  *   rev(k, x)               rev_k(x): the low k bits of x in reverse order
  *   class_count(pv, n, k)   #{ i < n : pv[i] == k }   (c_k over a prefix)
@@ -84,7 +84,7 @@
   logic integer max_pv{L}(uint8_t *pv, integer n) =
       n <= 0 ? 0 : (pv[n - 1] > max_pv{L}(pv, n - 1) ? pv[n - 1] : max_pv{L}(pv, n - 1));
 
-  // ---- Balance (../../shared/notes/why-b-schedules-are-balanced.md) ----
+  // ---- Balance (bsched/proofs/README.md: how it is proven) ----
   // The hand proof's interval picture, per class. Class k's c_k processes sit
   // side by side after the lower classes, each 2^-k of a minor cycle wide.
 

@@ -1,4 +1,4 @@
-# Assurance tools (issue 15): static analysis, cross compilers for the
+# Assurance tools (ASSURANCE.md): static analysis, cross compilers for the
 # portability matrix, coverage, and a big-endian target for the unit tests.
 #   cppcheck (MISRA C:2012 addon), clang + scan-build, lcov (make coverage),
 #   gcc-arm-none-eabi (Cortex-M0/M4), gcc-riscv64-unknown-elf (rv32imac),

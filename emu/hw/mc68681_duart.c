@@ -14,7 +14,7 @@
  * "received-a"/"received-b" (characters taken from each chardev; read-only).
  *
  * Radio mode (property "radio-medium", off by default): channel A is the
- * BiM-433 module on a shared medium (emu/radio_medium.py).  Its chardev then
+ * BiM-433 module on a shared medium (emu/python/robocube_emu/radio_medium.py).  Its chardev then
  * carries 2-byte messages instead of raw characters (protocol in
  * emu/README.md, "Radio medium"), characters take their real duration at the
  * programmed baud rate in virtual time (transmit holding + shift register,

@@ -7,25 +7,23 @@ build_elf    assembles a CPU32 test program into an ELF for the flash
 import os
 import shutil
 import subprocess
-import sys
 
 import pytest
 
-sys.path.insert(0, os.path.dirname(__file__))
-import qtestlib  # noqa: E402
+import robocube_emu
 
 CROSS = os.environ.get("BSCHED_M68K_PREFIX", "m68k-linux-gnu-")
 
 
 @pytest.fixture
 def machine():
-    with qtestlib.start() as m:
+    with robocube_emu.start() as m:
         yield m
 
 
 @pytest.fixture
 def raw_machine():
-    with qtestlib.start(disable_watchdog=False) as m:
+    with robocube_emu.start(disable_watchdog=False) as m:
         yield m
 
 

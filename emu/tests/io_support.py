@@ -1,14 +1,12 @@
 """Helpers for the emu-io device tests: register-level drivers for the
 PCF8584 and the TPU as firmware would use them, on top of the board
-helper's qtestlib (qtest protocol + QMP)."""
+helper robocube_emu.Machine (qtest protocol + QMP)."""
 
 import os
-import sys
 
 import pytest
 
-sys.path.insert(0, os.path.dirname(__file__))
-import qtestlib  # noqa: E402  (board helper's qtest/QMP client)
+import robocube_emu
 
 IO = "/machine/robocube-io"
 TPU = IO + "/tpu"
@@ -160,5 +158,5 @@ class Board:
 
 @pytest.fixture
 def board():
-    with qtestlib.start() as machine:
+    with robocube_emu.start() as machine:
         yield Board(machine)

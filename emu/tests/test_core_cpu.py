@@ -7,7 +7,7 @@ import time
 
 import pytest
 
-import qtestlib
+import robocube_emu
 
 # Common program skeleton: vector table at flash offset 0 (SSP = top of
 # TPURAM, which the first instructions map), bus error handler that prints
@@ -124,7 +124,7 @@ eol:     .asciz "\r\n"
 
 def run(build_elf, fault, extra_args=()):
     elf = build_elf(PROGRAM.replace("FAULT", fault))
-    return qtestlib.start(kernel=elf, extra_args=extra_args)
+    return robocube_emu.start(kernel=elf, extra_args=extra_args)
 
 
 def berr_frame(m):
@@ -329,7 +329,7 @@ def test_relocation_through_tpuram_then_sram_and_vbr(build_elf, fault, address, 
     a stub in TPURAM moves it to 0xE00000, SRAM appears at 0 with CS0/CS1,
     VBR points into the relocated flash and a bus error finds its handler there."""
     tail = PROGRAM[PROGRAM.index("/* Bus error: print"):]
-    with qtestlib.start(kernel=build_elf(RELOCATION.replace("FAULT2", fault) + tail)) as m:
+    with robocube_emu.start(kernel=build_elf(RELOCATION.replace("FAULT2", fault) + tail)) as m:
         assert m.console.read_until(b"RELOC OK\r\n", timeout=10).endswith(b"RELOC OK\r\n")
         fmt, fault_addr, pc, status = berr_frame(m)
         assert (fmt, fault_addr, status) == (0xC008, address, ssw)

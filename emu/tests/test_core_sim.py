@@ -156,7 +156,7 @@ def test_chip_selects_move_flash_and_map_sram(machine):
 
 
 def test_flash_image_at_boot_alias_and_after_relocation(build_elf):
-    import qtestlib
+    import robocube_emu
     elf = build_elf("""
         .long 0x00F20800
         .long 0x00000400
@@ -165,7 +165,7 @@ def test_flash_image_at_boot_alias_and_after_relocation(build_elf):
         .org 0xFFFFC
         .long 0x0BADF00D
     """)
-    with qtestlib.start(kernel=elf, qtest=True) as m:
+    with robocube_emu.start(kernel=elf, qtest=True) as m:
         assert m.readl(0x0) == 0x00F20800            # reset: flash at 0
         assert m.readl(0x400) == 0x5AA5C33C
         assert m.readl(0xFFFFC) == 0x0BADF00D

@@ -4,7 +4,7 @@ sensor inputs and reads actuator outputs over QMP."""
 
 import time
 
-import qtestlib
+import robocube_emu
 
 from io_support import IO
 
@@ -85,7 +85,7 @@ def wait_for(cond, timeout=10.0):
 
 def test_firmware_loop_with_host_io(build_elf):
     elf = build_elf(PROGRAM, name="io_loop")
-    with qtestlib.start(kernel=elf) as m:
+    with robocube_emu.start(kernel=elf) as m:
         m0 = IO + "/motor0"
         assert wait_for(lambda: m.qom_get(m0, "duty") == 3000), m.stderr()
         assert m.qom_get(m0, "direction") == 1

@@ -12,19 +12,14 @@ shift=8,sleep=off), so the same firmware, arena and seed give the same run
 bit for bit, whatever the load on the host.
 """
 
-import os
 import re
-import shutil
-import socket
-import subprocess
-import tempfile
+
+from robocube_emu.lockstep import LOCKSTEP, Emulator
+from robocube_emu.qmp import qom_set
 
 from motors import MotorModel
-from qmp_link import QMPLink, qom_get, qom_set
 
 IO = "/machine/robocube-io"
-LOCKSTEP = "/machine/lockstep"
-ICOUNT = "shift=8,sleep=off"
 # The step: one tick of the ecosystem firmware's 128 Hz kernel clock, and the
 # boundaries placed TICK_LEAD_NS before each tick once the firmware has
 # started its PIT (the lockstep device's origin-ns). Between a tick and the
@@ -37,7 +32,6 @@ ICOUNT = "shift=8,sleep=off"
 # is for the latency.)
 TICK_LEAD_NS = 200_000
 STEP_NS = 7_812_500
-FRAME_TIMEOUT_S = 60.0
 ANALOG = ("light_left", "light_right", "ir_left", "ir_right", "battery", "comp_left",
           "comp_right")
 
@@ -74,79 +68,6 @@ def parse_status(line, names):
             "ran": [n for i, n in enumerate(names) if mask >> i & 1],
             "overruns": int(m.group(6)),
             "contrib": {n: (int(a), int(b)) for n, (a, b) in zip(names, pairs)}}
-
-
-class Emulator:
-    """qemu-system-m68k -M robocube running `elf`, paused at start, lockstep on."""
-
-    def __init__(self, qemu, elf, step_ns, extra_args=()):
-        self.dir = tempfile.mkdtemp(prefix="bsched-eco-")
-        sock = os.path.join(self.dir, "qmp")
-        frames = os.path.join(self.dir, "lockstep")
-        self.stderr_path = os.path.join(self.dir, "stderr")
-        self._stderr = open(self.stderr_path, "wb")
-        self.proc = subprocess.Popen(
-            [qemu, "-M", "robocube", "-icount", ICOUNT, "-kernel", elf, "-display", "none",
-             "-serial", "stdio", "-monitor", "none", "-qmp", f"unix:{sock},server=on,wait=off",
-             "-chardev", f"socket,id=lockstep,path={frames},server=on,wait=off",
-             "-global", "robocube-lockstep.chardev=lockstep",
-             "-S", "-global", f"robocube-lockstep.step-ns={step_ns}", *extra_args],
-            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=self._stderr)
-        os.set_blocking(self.proc.stdout.fileno(), False)
-        self.console = b""
-        try:
-            self.qmp = QMPLink(sock)
-            self.frames = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-            self.frames.connect(frames)
-            self.frames.settimeout(FRAME_TIMEOUT_S)
-            self.frame_buf = b""
-        except Exception:
-            self.close()
-            raise
-
-    def read_frame(self):
-        """The next "S STEPS BOUNDARY_NS V..." line, as a list of ints."""
-        while b"\n" not in self.frame_buf:
-            try:
-                chunk = self.frames.recv(65536)
-            except socket.timeout:
-                raise RuntimeError(f"lockstep: no frame from QEMU in {FRAME_TIMEOUT_S} s "
-                                   "(the machine hangs or died)") from None
-            if not chunk:
-                raise RuntimeError("lockstep: QEMU closed the frame channel")
-            self.frame_buf += chunk
-        line, self.frame_buf = self.frame_buf.split(b"\n", 1)
-        words = line.decode().split()
-        if words[0] != "S":
-            raise RuntimeError(f"lockstep: QEMU refused a frame: {line.decode()}")
-        return [int(w) for w in words[1:]]
-
-    def send_inputs(self, values):
-        self.frames.sendall(("I " + " ".join(str(int(v)) for v in values) + "\n").encode())
-
-    def read_console(self):
-        """New complete console lines since the last call."""
-        try:
-            chunk = self.proc.stdout.read()
-        except BlockingIOError:
-            chunk = None
-        if chunk:
-            self.console += chunk
-        *lines, self.console = self.console.split(b"\n")
-        return [ln.decode(errors="replace").rstrip("\r") for ln in lines]
-
-    def close(self):
-        """Stops QEMU; returns what it wrote on stderr."""
-        if getattr(self, "frames", None):
-            self.frames.close()
-        if self.proc.poll() is None:
-            self.proc.kill()
-        self.proc.wait()
-        self._stderr.close()
-        with open(self.stderr_path, errors="replace") as f:
-            err = f.read()
-        shutil.rmtree(self.dir, ignore_errors=True)
-        return err
 
 
 def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step=None,

@@ -13,11 +13,9 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-
-from world import ArenaError, World, load_arena          # noqa: E402
-from record import Recorder, save_picture, summary_lines  # noqa: E402
-from view import LiveView, PlainProgress                  # noqa: E402
+from record import Recorder, save_picture, summary_lines
+from view import LiveView, PlainProgress
+from world import ArenaError, World, load_arena
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_ARENA = os.path.join(HERE, "arenas", "default.json")

@@ -1,5 +1,5 @@
-/* Runs the complete example of the README's "Programming with PDL" section
- * (extracted by pdl/pdl.mk into build/pdl/readme_example.c) on the host:
+/* Runs the complete example of pdl/README.md ("A complete program";
+ * extracted by pdl/pdl.mk into build/pdl/readme_example.c) on the host:
  * it must start, and turn toward a light on the left. Exit status 0 = pass. */
 #include <stdio.h>
 

@@ -64,7 +64,7 @@ def positive_seconds():
 def parse_args(argv):
     ap = Parser(prog="netpeer", description=__doc__, usage=USAGE)
     where = ap.add_mutually_exclusive_group(required=True)
-    where.add_argument("--socket", help="the radio medium's Unix socket (emu/radio_medium.py)")
+    where.add_argument("--socket", help="the radio medium's Unix socket (robocube_emu.radio_medium)")
     where.add_argument("--serial", help="a serial port with a real radio module")
     ap.add_argument("--station", type=ranged("station", 0, MAX_STATIONS - 1), required=True)
     ap.add_argument("--baud", type=ranged("baud", 300, 255 * 300), default=19200)

@@ -6,8 +6,7 @@ import re
 import sys
 import tempfile
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from netpeer.netnode import Board, MediumProcess, ROOT           # noqa: E402
+from netpeer.netnode import Board, MediumProcess, ROOT
 
 BENCH = re.compile(r"netnode: bench (\d+) of (\d+) messages of (\d+) bytes to \d+ in (\d+) ms")
 BAUD = re.compile(r"  radio (\d+) baud")

@@ -6,6 +6,8 @@ import sys
 import threading
 import time
 
+import robocube_emu
+
 MAGIC = b"NETNODE\0"
 MODES = {"soak": 1, "echo": 2, "bench": 3}
 # struct netnode_config after the magic (apps/netnode/netnode.c), big-endian, m68k layout.
@@ -22,6 +24,17 @@ ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 # SYNC_NS of virtual time (emu/README.md, "Radio medium").
 ICOUNT = "shift=8,sleep=off"
 SYNC_NS = 500_000
+
+
+def stop_process(proc):
+    """Asks proc to end (SIGTERM), kills it after 5 s, and reaps it."""
+    if proc.poll() is None:
+        proc.terminate()
+        try:
+            proc.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.wait()
 
 
 def _block(data, magic, elf):
@@ -60,10 +73,6 @@ def patch_config(elf_in, elf_out, station, mode="echo", peers=(), messages=10, s
         f.write(data)
 
 
-def qemu_binary():
-    return os.environ.get("BSCHED_QEMU") or os.path.join(ROOT, "build", "emu", "qemu-system-m68k")
-
-
 class Board:
     """One emulated RoboCube whose radio joins the medium at `medium_sock`; or,
     with medium_sock None, whose DUART channel A is a plain wire to a host
@@ -86,10 +95,8 @@ class Board:
                      "-global", "mc68681-duart.radio-medium=on",
                      "-global", f"mc68681-duart.radio-station={station}",
                      "-global", f"mc68681-duart.radio-sync-ns={sync_ns}"]
-        cmd = [qemu_binary(), "-M", "robocube", "-icount", icount, "-kernel", self.elf,
-               "-display", "none", "-monitor", "none", "-serial", "stdio"] + radio
-        self.proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                     stderr=subprocess.STDOUT)
+        self.proc = robocube_emu.popen(["-serial", "stdio"] + radio, kernel=self.elf,
+                                       icount=icount, stderr=subprocess.STDOUT)
         self.reader = threading.Thread(target=self._read, daemon=True)
         self.reader.start()
 
@@ -124,19 +131,13 @@ class Board:
         raise RuntimeError("no pty for channel A:\n" + self.text())
 
     def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
-                self.proc.wait()
+        stop_process(self.proc)
 
 
 class MediumProcess:
     def __init__(self, sock, seed=1, loss=0.0, corrupt=0.0, noise=0.0, out_of_range=(),
                  byte_errors=0.0):
-        cmd = [sys.executable, os.path.join(ROOT, "emu", "radio_medium.py"), "--socket", sock,
+        cmd = [sys.executable, "-m", "robocube_emu.radio_medium", "--socket", sock,
                "--seed", str(seed), "--loss", str(loss), "--corrupt", str(corrupt),
                "--noise", str(noise), "--byte-errors", str(byte_errors), "--sync-ns", str(SYNC_NS)]
         if os.environ.get("NET_MEDIUM_TRACE"):
@@ -166,9 +167,4 @@ class MediumProcess:
         return dict(kv.split("=") for kv in self.control("stats").split())
 
     def stop(self):
-        if self.proc.poll() is None:
-            self.proc.terminate()
-            try:
-                self.proc.wait(timeout=5)
-            except subprocess.TimeoutExpired:
-                self.proc.kill()
+        stop_process(self.proc)

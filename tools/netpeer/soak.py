@@ -18,9 +18,8 @@ import time
 
 import xdrlib3
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from netpeer import MediumTransport, Peer, Unreachable            # noqa: E402
-from netpeer.netnode import Board, MediumProcess, ROOT            # noqa: E402
+from netpeer import MediumTransport, Peer, Unreachable
+from netpeer.netnode import Board, MediumProcess, ROOT
 
 PORT_SOAK = 2
 HOST_STATIONS = (9, 10, 11, 12, 13, 14, 15, 8)   # the first is the single host peer's

@@ -3,14 +3,16 @@ import socket
 import threading
 import time
 
-MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_PACE, MSG_CLOCK = 0, 1, 2, 4, 5
-SEL_RX, SEL_TX = 1, 2
-CLOCK_UNIT = 10e-6            # seconds per unit of the medium's 05 k
+# The medium's message codes and select bits, defined once, by the medium.
+from robocube_emu.radio_medium import (CLOCK_UNIT_NS, MSG_CLOCK, MSG_CONTROL, MSG_DATA,
+                                       MSG_HELLO, MSG_PACE, SEL_RX, SEL_TX)
+
+CLOCK_UNIT = CLOCK_UNIT_NS / 1e9   # seconds per unit of the medium's 05 k
 
 
 class PeerClock:
     """The time a host peer's timers run on: the boards' virtual time while
-    the medium reports it (emu/radio_medium.py, "Clock"), wall time
+    the medium reports it (robocube_emu.radio_medium, "Clock"), wall time
     otherwise. In wall time the peer's retransmission timer expired while
     boards slowed by a loaded host were still answering in their own time.
 
@@ -78,7 +80,7 @@ class PeerClock:
 
 
 class MediumTransport:
-    """A station on emu/radio_medium.py (its 2-byte message protocol).
+    """A station on robocube_emu.radio_medium (its 2-byte message protocol).
     The medium plays our transmissions in the boards' virtual time when they
     run in lock step (its docstring, "Pacing"), and tells us when one is over;
     without boards in lock step we pace in wall time. Either way a transmission

@@ -9,8 +9,8 @@ import os
 import subprocess
 from pathlib import Path
 
-import kmeasure
-import qtestlib
+from robocube_emu.exectrace import symbols, trace_pcs
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -19,7 +19,7 @@ ELF = FW / "hello" / "hello.elf"
 
 
 def test_main_runs_as_a_thread_and_prints():
-    with qtestlib.Machine(kernel=str(ELF), extra_args=["-icount", "shift=8,sleep=off"]) as m:
+    with robocube_emu.Machine(kernel=str(ELF), extra_args=["-icount", "shift=8,sleep=off"]) as m:
         text = m.console.read_until(b"42\r\n", timeout=20).decode("latin-1")
     assert "hello from the RoboCube\r\n42\r\n" in text, text
 
@@ -46,12 +46,12 @@ def rte_addresses(elf):
 
 
 def test_printf_instruction_count():
-    sym = kmeasure.symbols(ELF)
+    sym = symbols(ELF)
     calls = printf_calls(ELF)
     assert len(calls) == 2, calls
     # QEMU is killed when the trace ends, losing the log it has not written yet:
     # trace 3 s of wall time, far past main (the idle board adds little).
-    pcs, console = kmeasure.trace_pcs(QEMU, ELF, seconds=3, marker=rb"^$(?!)")
+    pcs, console = trace_pcs(QEMU, ELF, seconds=3, marker=rb"^$(?!)")
     assert "42" in console, console
     # The console's transmitter interrupt comes while printf runs (it queues the
     # characters and enables the interrupt): the instructions from the kernel's

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 NAME = "zz_new_app_check"
@@ -42,7 +42,7 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
     r = make("firmware", f"APP={NAME}")
     assert r.returncode == 0, r.stdout + r.stderr
     elf = ROOT / "build" / "firmware" / NAME / f"{NAME}.elf"
-    with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", "shift=8,sleep=off"]) as m:
+    with robocube_emu.Machine(kernel=str(elf), extra_args=["-icount", "shift=8,sleep=off"]) as m:
         text = m.console.read_until(b"t=2 s", timeout=30).decode("latin-1")
         text += m.console.read_until(b"\n", timeout=10).decode("latin-1")
     lines = re.findall(r"t=(\d) s heading=(-?\d+) cycles=(\d+) runs=(\d+) overruns=(\d+)", text)

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import pytest
 
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -36,7 +36,7 @@ def board_lines():
     elf = FW / "rtcheck" / "rtcheck.elf"
     assert elf.is_file(), f"missing {elf} (make firmware APP=rtcheck)"
     lines = []
-    with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
+    with robocube_emu.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
         while not lines or lines[-1] != "RT end":
             line = m.console.read_until(b"\n", timeout=30).decode("latin-1").rstrip("\r\n")
             # A CPU exception report ends in "*** halted": fail at once, with the report.
@@ -135,7 +135,7 @@ def test_malloc_and_console_input():
     """malloc from the board's heap (ENOMEM past it), and stdin: fgets and getchar
     read console lines, edited and echoed by the console driver."""
     elf = FW / "rtcheck" / "rtcheck.elf"
-    with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
+    with robocube_emu.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT]) as m:
         text = m.console.read_until(b"RT input?", timeout=60).decode("latin-1")
         assert "RT malloc small=1 huge_refused=1 enomem=1" in text, text[-500:]
         m.console_write_taken(b"robot 42\r")

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 ELF = Path(os.environ.get("SHELL_ELF", ROOT / "build" / "firmware" / "shell" / "shell.elf"))
@@ -82,10 +82,10 @@ class Shell:
 
 @pytest.fixture(scope="module")
 def shell():
-    qemu = qtestlib.qemu_binary()
+    qemu = robocube_emu.qemu_binary()
     assert os.access(qemu, os.X_OK)
     assert ELF.is_file(), f"missing {ELF} (make firmware APP=shell)"
-    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off"]) as m:
+    with robocube_emu.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off"]) as m:
         yield Shell(m)
 
 
@@ -379,7 +379,7 @@ def test_exit_stops_the_motors_and_switches_the_board_off():
     """On a board of its own, with -no-shutdown so that the machine stays for
     QMP after the power-off: exit leaves every motor at 0 and the board off
     (QEMU's run state "shutdown"), and nothing typed afterwards is answered."""
-    with qtestlib.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off",
+    with robocube_emu.start(kernel=ELF, extra_args=["-icount", "shift=8,sleep=off",
                                                 "-no-shutdown"]) as m:
         sh = Shell(m)
         assert sh.one("motor 0 600") == "motor 0 = 600 per-mille"
@@ -460,7 +460,7 @@ def test_absent_chip_and_stuck_bus_answer_errors_and_the_shell_goes_on(shell):
 
 
 def test_net_statistics_and_start(shell):
-    """`net` prints the radio stack's counters (issue 11's shell command); the
+    """`net` prints the radio stack's counters (the radio stack's shell command); the
     stack runs only after `net start N`, once, with N a station number."""
     assert shell.one("net") == "net: not started (net start STATION)"
     for bad in ("net bogus", "net start", "net start 256", "net start x", "net start 1 2"):

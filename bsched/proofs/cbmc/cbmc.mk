@@ -1,4 +1,4 @@
-# CBMC bounded model checking of bsched.c (issue 4). One folder per harness in
+# CBMC bounded model checking of bsched.c. One folder per harness in
 # bsched/proofs/cbmc/<harness>/ with its own Makefile (make -C that folder works
 # on its own); this fragment runs them with the bounds below.
 #

@@ -47,9 +47,9 @@ fi
 
 # The seconds column comes from the goal lines' times; a minute or more is printed
 # as 1'14s, which was once read as the Qed time before it (0.89 s for 74 s).
-if python3 - "$root/bsched/proofs/wp" <<'PY'
+# Python run from stdin has the working folder first on its path: wp_report.py's.
+if (cd "$root/bsched/proofs/wp" && python3 -) <<'PY'
 import sys
-sys.path.insert(0, sys.argv[1])
 from wp_report import seconds
 cases = {" : Valid (Qed:888ms) (1'14s) (1168630)": 74.0, " : Valid (Qed:678ms) (43.9s) (967767)": 43.9,
          " : Valid (380ms)": 0.38, " : Valid (1h2')": 3720.0, " : Valid (Qed:45ms)": 0.045}

@@ -1,13 +1,6 @@
-import os
-import sys
-
 import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "emu", "tests"))
-
-from iotest_board import IoTestBoard  # noqa: E402
+from iotest_board import IoTestBoard
 
 
 @pytest.fixture(scope="module")

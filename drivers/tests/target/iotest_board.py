@@ -5,7 +5,7 @@ import os
 import time
 from pathlib import Path
 
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 ELF = Path(os.environ.get("IOTEST_ELF", ROOT / "build" / "firmware" / "iotest" / "iotest.elf"))
@@ -17,7 +17,7 @@ DUART = "/machine/duart"
 class IoTestBoard:
     def __init__(self, timeout=20.0):
         assert ELF.is_file(), f"missing {ELF} (make firmware APP=iotest)"
-        self.m = qtestlib.Machine(kernel=str(ELF), extra_args=["-icount", ICOUNT])
+        self.m = robocube_emu.Machine(kernel=str(ELF), extra_args=["-icount", ICOUNT])
         self.boot = self.read_until(b"iotest ready\r\n", timeout).decode(errors="replace")
 
     def close(self):

@@ -202,7 +202,7 @@ def test_bad_commands_answer_err(board):
 def test_snapshot_timing_and_cpu_load(board):
     """Full snapshots (24 analog + 16 binary I/O + 5 binary inputs) back to
     back: the sampler at a 1 ms period restarts each sweep from the I2C
-    interrupt as the previous one ends. Goals (issue 10): <= 8 ms of virtual
+    interrupt as the previous one ends. Goals (drivers/README.md): <= 8 ms of virtual
     time per snapshot at 90 kHz SCL, CPU busy <= 15 % meanwhile (idle-loop
     counter against an equally long idle span)."""
     period, ticks, sweeps, busy, cpu_us, _ = board.ints("benchsamp 1 300")

@@ -11,14 +11,12 @@ import os
 import re
 import select
 import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "emu" / "tests"))
-from qtestlib import qmp_connect  # noqa: E402  (the shared QMP client, qemu.qmp)
+import robocube_emu
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
 ELF = Path(os.environ.get("MOTION_ELF", Path(__file__).resolve().parents[3] / "build" / "firmware"
@@ -32,12 +30,11 @@ class MotionBoard:
     def __init__(self, qmp_path):
         assert QEMU and os.access(QEMU, os.X_OK), f"BSCHED_QEMU not executable: {QEMU!r}"
         assert ELF.is_file(), f"missing image {ELF} (make firmware APP=motiontest)"
-        self.proc = subprocess.Popen(
-            [QEMU, "-M", "robocube", "-icount", ICOUNT, "-kernel", str(ELF), "-display", "none",
-             "-monitor", "none", "-serial", "stdio", "-qmp", f"unix:{qmp_path},server=on,wait=off"],
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        self.proc = robocube_emu.popen(
+            ["-serial", "stdio", "-qmp", f"unix:{qmp_path},server=on,wait=off"], kernel=ELF,
+            icount=ICOUNT, qemu=QEMU, stdin=subprocess.PIPE)
         self.buf = b""
-        self.qmp = qmp_connect(qmp_path, self.proc)
+        self.qmp = robocube_emu.connect(qmp_path, self.proc)
         self.line(timeout=REPLY_TIMEOUT, pattern=rb"motiontest ready")
 
     def _qmp(self, name, **args):

@@ -4,13 +4,11 @@ Paths come from the environment set by emu/eco.mk: BSCHED_QEMU (the board
 binary), ECO_ELF (the ecosystem firmware), ECO_HOST_LIB (the program built
 for the host)."""
 import os
-import sys
 
 import pytest
 
 WORLD = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ROOT = os.path.dirname(os.path.dirname(WORLD))
-sys.path.insert(0, WORLD)
 
 
 def _path(var, default):

@@ -10,8 +10,9 @@ import subprocess
 
 import pytest
 
-from conftest import ROOT, WORLD
 import run
+
+from .conftest import ROOT, WORLD
 
 DEFAULT = os.path.join(WORLD, "arenas", "default.json")
 with open(DEFAULT) as _f:

@@ -1,6 +1,6 @@
 """The ecosystem end to end, through run.py (what make run starts): the
 robot program on the emulated board in lockstep with the world, and the same
-program on the host (fast mode). Goals of issue 13: survival with recharges
+program on the host (fast mode). Goals (emu/world/README.md): survival with recharges
 and no wall collisions after the first minute, reproducible trajectories."""
 import json
 import os
@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from conftest import WORLD
+from .conftest import WORLD
 
 RUN = os.path.join(WORLD, "run.py")
 # make check runs a shorter survival span on the board; make eco-survival the full 600 s.

@@ -7,8 +7,10 @@ import os
 
 import pytest
 
-from cosim import IO, LOCKSTEP, Emulator
-from qmp_link import QMPError, qom_get, qom_set
+from robocube_emu.lockstep import LOCKSTEP, Emulator
+from robocube_emu.qmp import QMPError, qom_get, qom_set
+
+from cosim import IO
 
 # What the firmware makes of its inputs (the board's own motor model is left
 # out: its 1 ms integration timer is not phase-locked to the boundaries, see

@@ -6,9 +6,10 @@ Groups: kernel core (kernel/k_*.c), CPU32 port + board glue
 (kernel/arch/cpu32/k_*.c, switch.S), bsched.c, the firmware base it runs on
 (startup, fault reporter, polled console, PIT), the formatter kprintf.c that
 k_printf uses (counted with the kernel), the test program."""
-import re
 import sys
 from collections import defaultdict
+
+from robocube_emu.linkmap import input_sections
 
 FLASH_LO, FLASH_HI = 0xE00000, 0xF00000
 
@@ -25,25 +26,6 @@ def group_of(path):
     if "/build/firmware/obj/" in path:
         return "firmware base (startup, faults, polled console, PIT)"
     return "test program"
-
-
-def input_sections(map_path, kinds=("text", "rodata")):
-    """(section, address, size, object) for every input section of the given
-    kinds the link kept, from a GNU ld map (objects in archives read
-    'lib.a(obj.o)')."""
-    text = open(map_path).read()
-    body = text.split("Linker script and memory map", 1)[1]
-    names = "|".join(kinds)
-    pending = None
-    for line in body.splitlines():
-        m = re.match(rf"^ (\.(?:{names})\S*)\s*$", line)
-        if m:
-            pending = m.group(1)
-            continue
-        m = re.match(rf"^ (\.(?:{names})\S*)?\s+0x([0-9a-f]+)\s+0x([0-9a-f]+)\s+(\S+\.o\)?)\s*$", line)
-        if m and (m.group(1) or pending):
-            yield (m.group(1) or pending), int(m.group(2), 16), int(m.group(3), 16), m.group(4)
-        pending = None
 
 
 def main(map_path):

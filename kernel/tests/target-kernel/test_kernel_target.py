@@ -16,13 +16,15 @@ import os
 import re
 from pathlib import Path
 
+from robocube_emu import launch
+from robocube_emu.exectrace import run_until_result
+
 import kmeasure
 
 ROOT = Path(__file__).resolve().parents[3]
 QEMU = os.environ.get("BSCHED_QEMU", "")
 IMAGES = Path(os.environ.get("K_TARGET_DIR", ROOT / "build" / "kernel" / "target"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
-ICOUNT = ["-icount", "shift=8,sleep=off"]
 TIME_LIMIT = 60.0  # wall seconds per image
 
 
@@ -32,9 +34,8 @@ def run_image(mode, limit, extra=()):
     assert QEMU and os.access(QEMU, os.X_OK), f"BSCHED_QEMU not executable: {QEMU!r}"
     elf = IMAGES / f"ktest-{mode}.elf"
     assert elf.is_file(), f"missing {elf} (make kernel-target)"
-    cmd = [QEMU, "-M", "robocube", "-kernel", str(elf), "-display", "none",
-           "-monitor", "none", "-serial", "stdio", *ICOUNT, *extra]
-    out, err = kmeasure.run_until_result(cmd, limit)
+    cmd = launch.command(["-serial", "stdio", *extra], kernel=elf, qemu=QEMU)
+    out, err = run_until_result(cmd, limit)
     return out.decode("latin-1").replace("\r\n", "\n"), err
 
 

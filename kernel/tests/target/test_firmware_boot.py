@@ -12,14 +12,12 @@ import os
 import re
 import select
 import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[3] / "emu" / "tests"))
-from qtestlib import _die_with_parent, qmp_connect  # noqa: E402  (shared with the emulator tests)
+import robocube_emu
 
 
 QEMU = os.environ.get("BSCHED_QEMU", "")
@@ -56,15 +54,12 @@ class Board:
         assert Path(elf).is_file(), f"missing image {elf} (make firmware-tests)"
         extra = ["-qmp", f"unix:{qmp_path},server=on,wait=off"] if qmp_path else []
         self.start = time.monotonic()
-        self.proc = subprocess.Popen(
-            [QEMU, "-M", "robocube", "-icount", ICOUNT, "-kernel", str(elf), "-display", "none",
-             "-monitor", "none", "-serial", "stdio"] + extra,
-            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-            preexec_fn=_die_with_parent)
+        self.proc = robocube_emu.popen(["-serial", "stdio"] + extra, kernel=elf,
+                                       icount=ICOUNT, qemu=QEMU)
         self.output = b""
         self.qmp = None
         if qmp_path:
-            self.qmp = qmp_connect(qmp_path, self.proc)
+            self.qmp = robocube_emu.connect(qmp_path, self.proc)
 
     def qmp_command(self, name, **args):
         return self.qmp.command(name, **args)

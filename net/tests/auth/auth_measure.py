@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The cost of net/auth.c on the emulated CPU32, from the deterministic
-instruction count (kernel/tests/target-kernel/kmeasure.py's exec trace:
+instruction count (robocube_emu.exectrace:
 -icount shift=8,sleep=off -singlestep -d exec,nochain):
 
   costs(qemu, elf)    instructions of each measured call of auth_board.c,
@@ -18,10 +18,11 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+from robocube_emu import launch
+from robocube_emu.exectrace import run_until_result, spans, symbols, trace_pcs
+from robocube_emu.linkmap import input_sections
+
 ROOT = Path(__file__).resolve().parents[3]
-sys.path.insert(0, str(ROOT / "kernel" / "tests" / "target-kernel"))
-import kmeasure  # noqa: E402
-import ksize  # noqa: E402
 
 DONE = rb"AUTH-BOARD DONE[^\r\n]*\r?\n"
 # call name -> (function entered, label after the call)
@@ -36,26 +37,25 @@ ICOUNT_NS = 256          # -icount shift=8: 256 ns of virtual time per instructi
 
 
 def console(qemu, elf, seconds=60.0):
-    cmd = [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none", "-monitor",
-           "none", "-serial", "stdio", "-icount", "shift=8,sleep=off"]
-    out, _ = kmeasure.run_until_result(cmd, seconds, DONE)
+    cmd = launch.command(["-serial", "stdio"], kernel=elf, qemu=qemu)
+    out, _ = run_until_result(cmd, seconds, DONE)
     return out.decode("latin-1").replace("\r\n", "\n")
 
 
 def costs(qemu, elf, seconds=120.0):
-    sym = kmeasure.symbols(elf)
-    pcs, text = kmeasure.trace_pcs(qemu, elf, seconds, DONE)
+    sym = symbols(elf)
+    pcs, text = trace_pcs(qemu, elf, seconds, DONE)
     found = {}
     for name, (func, label) in CALLS.items():
         # stop_at: a span that meets the function's entry again before the
         # label belongs to another call of the same function.
-        found[name] = kmeasure.spans(pcs, sym[func], sym[label], stop_at=sym[func])
+        found[name] = spans(pcs, sym[func], sym[label], stop_at=sym[func])
     return found, text
 
 
 def footprint(map_path):
     sizes = defaultdict(int)
-    for section, _, size, path in ksize.input_sections(
+    for section, _, size, path in input_sections(
             map_path, ("text", "rodata", "data", "bss")):
         if not size:
             continue

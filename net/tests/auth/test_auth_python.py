@@ -6,13 +6,11 @@ import os
 import random
 import re
 import subprocess
-import sys
 
 import pytest
+from netpeer import auth
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from netpeer import auth  # noqa: E402
 
 TOOL = os.environ.get("NET_AUTH_SAMPLE") or os.path.join(ROOT, "build", "net", "tests",
                                                           "auth_sample")

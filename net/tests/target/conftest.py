@@ -1,14 +1,10 @@
 import os
-import sys
 import tempfile
 
 import pytest
+from netpeer.netnode import Board, MediumProcess
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-sys.path.insert(0, os.path.join(ROOT, "emu"))   # radio_medium (medium_station.py)
-
-from netpeer.netnode import Board, MediumProcess   # noqa: E402
 
 
 class Air:

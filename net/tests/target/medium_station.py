@@ -1,11 +1,12 @@
-"""A raw station on emu/radio_medium.py's socket, for the tests that speak the
+"""A raw station on the radio medium's socket (robocube_emu.radio_medium), for the tests that speak the
 medium's 2-byte messages themselves (test_medium, test_peer_clock) instead of
-running a board or a host peer. The messages are in radio_medium.py's docstring."""
+running a board or a host peer. The messages are in the medium's docstring."""
 import socket
 import time
 
-# The message codes from the medium itself (emu/ is on the path: conftest.py).
-from radio_medium import MSG_CLOCK, MSG_CONTROL, MSG_DATA, MSG_HELLO, MSG_PACE, MSG_SYNC  # noqa: F401
+# The message codes from the medium itself.
+from robocube_emu.radio_medium import (MSG_CLOCK, MSG_CONTROL, MSG_DATA, MSG_HELLO,  # noqa: F401
+                                       MSG_PACE, MSG_SYNC)
 
 
 def sealed(auth, f):

@@ -3,12 +3,10 @@ reedsolo), both directions, with errors the code must correct."""
 import os
 import random
 import subprocess
-import sys
+
+from netpeer.protocol import FEC_COPIES, FEC_N, PREAMBLE, FecDecoder, Frame, encode_frame_fec
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-sys.path.insert(0, os.path.join(ROOT, "tools"))
-from netpeer.protocol import (FEC_COPIES, FEC_N, PREAMBLE, FecDecoder, Frame,  # noqa: E402
-                              encode_frame_fec)
 
 TOOL = os.environ.get("NET_FEC_SAMPLE") or os.path.join(ROOT, "build", "net", "tests",
                                                          "fec_sample")

@@ -1,4 +1,4 @@
-"""emu/radio_medium.py alone, with raw stations: carrier, hearing rules,
+"""robocube_emu.radio_medium alone, with raw stations: carrier, hearing rules,
 collisions, deterministic faults, stations that leave."""
 import time
 

@@ -1,4 +1,4 @@
-"""The net/ stack on emulated boards through emu/radio_medium.py, and the host peer."""
+"""The net/ stack on emulated boards through robocube_emu.radio_medium, and the host peer."""
 import re
 import struct
 import time

@@ -1,4 +1,4 @@
-"""A host peer's timers run in the boards' virtual time (emu/radio_medium.py,
+"""A host peer's timers run in the boards' virtual time (robocube_emu.radio_medium,
 "Clock"; net/README.md, "Fixed bugs"): the medium's 05 k messages, the
 PeerClock that counts them, and a peer that waits for a slow board without
 retransmitting."""

@@ -1,13 +1,11 @@
 """The board model's radio mode (emu/hw/mc68681_duart.c, radio-medium=on) under
 qtest: the test is the medium on channel A's socket and owns the virtual clock."""
 import os
-import sys
 import time
 
 import pytest
 
-sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "..", "emu", "tests"))
-import qtestlib  # noqa: E402
+import robocube_emu
 
 D = 0xFFE400
 MRA, SRA, CSRA, CRA, RBA, TBA = D + 0, D + 1, D + 1, D + 2, D + 3, D + 3
@@ -19,7 +17,7 @@ CHAR_NS = 10 * 1_000_000_000 // 19200          # 520833 ns per character at 1920
 
 @pytest.fixture
 def radio():
-    with qtestlib.start(extra_args=["-global", "mc68681-duart.radio-medium=on",
+    with robocube_emu.start(extra_args=["-global", "mc68681-duart.radio-medium=on",
                                     "-global", "mc68681-duart.radio-station=5"]) as m:
         m.writeb(ACR, 0x80)                     # baud-rate set 2
         m.writeb(CSRA, 0xCC)                    # 19200

@@ -7,7 +7,7 @@ deterministic instruction count (-icount shift=8,sleep=off):
                             method, see apps/pdl_bench/bench.c), stack, overruns
   cycle_costs(qemu, elf)    instruction counts of every PDL cycle of the sweep
                             (N = 5, 10, 20, 30 processes, Q = 2N quantities) from a
-                            QEMU exec trace (kmeasure.trace_pcs), split in phases:
+                            QEMU exec trace (robocube_emu.exectrace), split in phases:
                             begin (clock, dt, sensors), processes, end (commit,
                             actuators), and fitted per process run and per commit
   footprint(map)            the runtime's flash (.text/.rodata) and RAM (.data/.bss)
@@ -22,20 +22,18 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[3]
-sys.path.insert(0, str(ROOT / "kernel" / "tests" / "target-kernel"))
-import kmeasure  # noqa: E402
-import ksize  # noqa: E402
+from robocube_emu import launch
+from robocube_emu.exectrace import run_until_result, symbols, trace_pcs
+from robocube_emu.linkmap import input_sections
 
-ICOUNT = ["-icount", "shift=8,sleep=off"]
+ROOT = Path(__file__).resolve().parents[3]
 SWEEP = (5, 10, 20, 30)
 INSTR_PER_TICK = 1e9 / 1024 / 256      # 256 ns per instruction, 1024 Hz tick
 
 
 def run_bench(qemu, elf, seconds=120.0):
-    cmd = [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
-           "-monitor", "none", "-serial", "stdio", *ICOUNT]
-    out, err = kmeasure.run_until_result(cmd, seconds, rb"PDL-BENCH RESULT [^\r\n]*\r?\n")
+    cmd = launch.command(["-serial", "stdio"], kernel=elf, qemu=qemu)
+    out, err = run_until_result(cmd, seconds, rb"PDL-BENCH RESULT [^\r\n]*\r?\n")
     return out.decode("latin-1").replace("\r\n", "\n")
 
 
@@ -61,8 +59,8 @@ def fit(points):
 
 
 def cycle_costs(qemu, elf, seconds=300.0):
-    sym = kmeasure.symbols(elf)
-    pcs, console = kmeasure.trace_pcs(qemu, elf, seconds, rb"PDL-BENCH SWEEP DONE")
+    sym = symbols(elf)
+    pcs, console = trace_pcs(qemu, elf, seconds, rb"PDL-BENCH SWEEP DONE")
     vectors = {a for n, a in sym.items() if n.startswith("cpu32_vector")}
     bodies = {a for n, a in sym.items() if re.fullmatch(r"bench_p\d+", n)}
     start, run, end = sym["pdl_board_cycle"], sym["pdl_cycle_run"], sym["pdl_cycle_end"]
@@ -117,7 +115,7 @@ def summarise(cycles):
 def footprint(map_path):
     """Bytes of the PDL runtime (objects built from pdl/*.c) by region."""
     sizes = defaultdict(int)
-    for section, _, size, path in ksize.input_sections(map_path, ("text", "rodata", "data", "bss")):
+    for section, _, size, path in input_sections(map_path, ("text", "rodata", "data", "bss")):
         if ("/obj/pdl/" in path or "libpdl.a(" in path) and size:
             kind = section.split(".")[1]
             sizes["flash" if kind in ("text", "rodata") else "ram"] += size

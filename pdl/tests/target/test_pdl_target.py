@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 import pdl_measure
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -34,7 +34,7 @@ class Demo:
     def __init__(self):
         elf = FW / "pdl_demo" / "pdl_demo.elf"
         assert elf.is_file(), f"missing {elf} (make firmware APP=pdl_demo)"
-        self.m = qtestlib.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT])
+        self.m = robocube_emu.Machine(kernel=str(elf), extra_args=["-icount", ICOUNT])
         self.boot = self.m.console.read_until(b"PDL-DEMO running", timeout=30).decode("latin-1")
 
     def close(self):

@@ -1,4 +1,4 @@
-"""Test client for the robocube QEMU machine.
+"""A robocube machine for tests: qtest, QMP and the three serial ports.
 
 Starts qemu-system-m68k -M robocube with
   * the qtest protocol on a Unix socket (``-accel qtest``: the CPU does not
@@ -9,68 +9,32 @@ Starts qemu-system-m68k -M robocube with
     index 0 = DUART channel B (console), 1 = DUART channel A (radio),
     2 = QSM SCI.
 
-    with qtestlib.start() as m:
+    with robocube_emu.start() as m:
         m.writeb(0xFFE40A, 0x05)
         m.clock_step(1_000_000)
         m.qom_get("/machine/duart", "opr")
 
-The QEMU binary: $BSCHED_QEMU, else this checkout's build/emu/qemu-system-m68k.
+The QEMU binary: launch.qemu_binary().
 """
 
 import contextlib
-import ctypes
 import os
-import signal
 import shutil
 import socket
 import subprocess
 import tempfile
 import time
 
-from qemu.qmp import QMPError
-from qemu.qmp.legacy import QEMUMonitorProtocol
-
-
-def _die_with_parent():
-    """preexec_fn: the kernel sends SIGKILL to the child when this process dies,
-    so a killed or crashed test run never leaves an emulator spinning (under
-    -icount sleep=off an idle guest keeps a host core busy)."""
-    ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
+from . import launch
+from .qmp import QMPLink
 
 SERIAL_NAMES = ("console", "radio", "sci")
 SYPCR = 0xFFFA21
-
-
-def qemu_binary():
-    path = os.environ.get("BSCHED_QEMU") or os.path.join(
-        os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "emu",
-        "qemu-system-m68k")
-    if not os.access(path, os.X_OK):
-        raise FileNotFoundError(
-            f"{path}: qemu-system-m68k with the robocube machine is not built "
-            "(run ci/setup qemu)")
-    return path
+QMP_REPLY_TIMEOUT = 120.0     # seconds of wall time one QMP answer may take
 
 
 class QTestError(RuntimeError):
     pass
-
-
-def qmp_connect(path, proc=None, timeout=10.0):
-    """A QMP client (qemu.qmp) of a QEMU started with -qmp unix:PATH,server=on,wait=off,
-    capabilities negotiated. The socket file can appear before QEMU listens on it, so
-    the connection is retried until `timeout` seconds pass or `proc` (the QEMU) exits."""
-    deadline = time.monotonic() + timeout
-    while True:
-        qmp = QEMUMonitorProtocol(str(path))
-        try:
-            qmp.connect()
-            return qmp
-        except QMPError as e:
-            qmp.close()
-            if time.monotonic() > deadline or (proc is not None and proc.poll() is not None):
-                raise QTestError(f"QMP socket {path} did not open within {timeout} s: {e}") from e
-            time.sleep(0.02)
 
 
 class SerialPort:
@@ -100,32 +64,29 @@ class SerialPort:
         """Waits (wall time) until marker appears; returns everything up to and
         including it and keeps the rest. step: called between polls (e.g. to
         advance the qtest clock)."""
-        deadline = time.monotonic() + timeout
-        while True:
-            self.poll()
+        def end():
             idx = self.received.find(marker)
-            if idx >= 0:
-                out = bytes(self.received[:idx + len(marker)])
-                del self.received[:idx + len(marker)]
-                return out
-            if time.monotonic() > deadline:
-                raise TimeoutError(f"serial {self.name}: {marker!r} not seen in "
-                                   f"{timeout} s; got {bytes(self.received)!r}")
-            if step:
-                step()
-            else:
-                time.sleep(0.01)
+            return idx + len(marker) if idx >= 0 else -1
+        return self._take(end, f"{marker!r} not seen in {timeout} s", timeout, step)
 
     def read_exactly(self, count, timeout=10.0, step=None):
+        """Waits until count bytes have come; returns them and keeps the rest."""
+        return self._take(lambda: count if len(self.received) >= count else -1,
+                          f"wanted {count} bytes", timeout, step)
+
+    def _take(self, end, failure, timeout, step):
+        """Polls (calling step, or sleeping 10 ms, in between) until end() gives
+        how many received bytes to return, or raises TimeoutError after timeout s."""
         deadline = time.monotonic() + timeout
         while True:
             self.poll()
-            if len(self.received) >= count:
-                out = bytes(self.received[:count])
-                del self.received[:count]
+            n = end()
+            if n >= 0:
+                out = bytes(self.received[:n])
+                del self.received[:n]
                 return out
             if time.monotonic() > deadline:
-                raise TimeoutError(f"serial {self.name}: wanted {count} bytes, "
+                raise TimeoutError(f"serial {self.name}: {failure}; "
                                    f"got {bytes(self.received)!r}")
             if step:
                 step()
@@ -154,8 +115,7 @@ class Machine:
         self.qmp = None
         listeners = []
         try:
-            args = [qemu_binary(), "-M", "robocube", "-display", "none",
-                    "-nodefaults", "-monitor", "none"]
+            args = ["-nodefaults"]
             serial_listeners = []
             for i, name in enumerate(SERIAL_NAMES):
                 path = os.path.join(self.dir, f"serial{i}.sock")
@@ -165,7 +125,8 @@ class Machine:
                 args += ["-chardev", f"socket,id=ser{i},path={path}",
                          "-serial", f"chardev:ser{i}"]
             qmp_path = os.path.join(self.dir, "qmp.sock")
-            self.qmp = QEMUMonitorProtocol(qmp_path, server=True)
+            qmp_listener = self._listen(qmp_path)
+            listeners.append(qmp_listener)
             args += ["-qmp", f"unix:{qmp_path}"]
             if self.qtest_enabled:
                 qtest_path = os.path.join(self.dir, "qtest.sock")
@@ -174,21 +135,22 @@ class Machine:
                 args += ["-accel", "qtest", "-qtest", f"unix:{qtest_path}"]
             else:
                 args += ["-accel", "tcg"]
-            if kernel:
-                args += ["-kernel", str(kernel)]
             args += list(extra_args)
-            self.args = args
+            # icount=None: the run's -icount, if any, comes in extra_args.
+            self.args = launch.command(args, kernel=kernel or None, icount=None)
             self.stderr_path = os.path.join(self.dir, "stderr.log")
-            self.proc = subprocess.Popen(args, stdin=subprocess.DEVNULL,
-                                         stdout=subprocess.DEVNULL,
-                                         stderr=open(self.stderr_path, "w"),
-                                         preexec_fn=_die_with_parent)
+            with open(self.stderr_path, "w") as stderr:
+                self.proc = launch.popen(args, kernel=kernel or None, icount=None,
+                                         stdout=subprocess.DEVNULL, stderr=stderr)
             # QEMU connects the chardevs, then qtest, then QMP, in this order.
             self.serial = [SerialPort(name, self._accept(lst, timeout))
                            for name, lst in zip(SERIAL_NAMES, serial_listeners)]
             if self.qtest_enabled:
                 self._qtest = self._accept(qtest_listener, timeout)
-            self.qmp.accept(timeout)
+            # A reply may be slow on a loaded host (once 30 s at a load average
+            # of 20 on 2 cores); QMP_REPLY_TIMEOUT bounds the wait all the same.
+            self.qmp = QMPLink(sock=self._accept(qmp_listener, timeout),
+                               timeout=QMP_REPLY_TIMEOUT)
             if self.qtest_enabled and disable_watchdog:
                 self.writeb(SYPCR, 0x00)
         except BaseException:

@@ -84,6 +84,9 @@ import signal
 import sys
 from collections import deque
 
+# Codes 00-03 and the select bits are the board's too (RADIO_MSG_*, RADIO_OP_*
+# in emu/hw/mc68681_duart.c; emu/tests/test_core_radio_constants.py checks
+# them against the C); 04 and 05 are spoken with host peers only.
 MSG_DATA, MSG_CONTROL, MSG_HELLO, MSG_SYNC, MSG_PACE, MSG_CLOCK = 0, 1, 2, 3, 4, 5
 CLOCK_UNIT_NS = 10_000          # the unit of 05 k
 SEL_RX, SEL_TX = 1, 2
