@@ -10,7 +10,7 @@ import re
 from pathlib import Path
 
 import pytest
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -32,7 +32,7 @@ TESTS = [
 
 @pytest.fixture(scope="module")
 def console():
-    with qtestlib.Machine(kernel=str(ELF), extra_args=["-icount", "shift=8,sleep=off"],
+    with robocube_emu.Machine(kernel=str(ELF), extra_args=["-icount", "shift=8,sleep=off"],
                           timeout=60) as m:
         text = m.console.read_until(b"POSIX READY FOR INPUT\r\n", timeout=120).decode("latin-1")
         m.console.write(b"posix line\r")

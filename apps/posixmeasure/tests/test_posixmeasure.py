@@ -11,7 +11,7 @@ import os
 import statistics
 from pathlib import Path
 
-import kmeasure
+from robocube_emu.exectrace import spans, symbols, trace_pcs
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -20,21 +20,21 @@ ELF = FW / "posixmeasure" / "posixmeasure.elf"
 
 
 def test_posix_calls_cost_within_ten_percent_of_the_kernel_calls():
-    sym = kmeasure.symbols(ELF)
-    pcs, console = kmeasure.trace_pcs(QEMU, ELF, seconds=60, marker=rb"POSIX MEASURE DONE")
+    sym = symbols(ELF)
+    pcs, console = trace_pcs(QEMU, ELF, seconds=60, marker=rb"POSIX MEASURE DONE")
     assert "POSIX MEASURE DONE" in console, console
-    spans = {
-        "k_mutex_lock_unlock": kmeasure.spans(pcs, sym["pm_k_mutex_begin"], sym["pm_k_mutex_end"]),
-        "pthread_mutex_lock_unlock": kmeasure.spans(pcs, sym["pm_pthread_mutex_begin"],
+    paths = {
+        "k_mutex_lock_unlock": spans(pcs, sym["pm_k_mutex_begin"], sym["pm_k_mutex_end"]),
+        "pthread_mutex_lock_unlock": spans(pcs, sym["pm_pthread_mutex_begin"],
                                                     sym["pm_pthread_mutex_end"]),
-        "k_sem_handoff": kmeasure.spans(pcs, sym["pm_k_sem_before_post"], sym["pm_k_sem_after_wait"],
+        "k_sem_handoff": spans(pcs, sym["pm_k_sem_before_post"], sym["pm_k_sem_after_wait"],
                                         must_pass=sym["k_arch_switch"]),
-        "sem_handoff": kmeasure.spans(pcs, sym["pm_sem_before_post"], sym["pm_sem_after_wait"],
+        "sem_handoff": spans(pcs, sym["pm_sem_before_post"], sym["pm_sem_after_wait"],
                                       must_pass=sym["k_arch_switch"]),
     }
-    for name, counts in spans.items():
+    for name, counts in paths.items():
         assert len(counts) >= 10, (name, counts)
-    med = {name: statistics.median(counts) for name, counts in spans.items()}
+    med = {name: statistics.median(counts) for name, counts in paths.items()}
     # The median: a tick interrupt that lands inside a span makes it longer
     # (the first lock of the statically initialised mutex also makes the
     # kernel mutex).
