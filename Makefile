@@ -18,6 +18,18 @@ RESULTS := $(BUILD)/results
 PYTHON := $(BUILD)/venv/bin/python
 # Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
 record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
+empty :=
+space := $(empty) $(empty)
+# Build lines: one short line per step ("  CC      kernel/k_sched.c") unless
+# V=1, which shows every command in full. A recipe line starts with
+# $(call quiet,WHAT,FILE) and then its command:
+#     $(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<
+V ?= 0
+ifeq ($(V),1)
+quiet =
+else
+quiet = @printf '  %-7s %s\n' '$(1)' '$(patsubst $(ROOT)/%,%,$(2))';
+endif
 # $(call check_whole_number,WHO,VAR,MIN,MAX,USAGE): stops make (status 2) with one line
 # unless $(VAR) is one plain decimal integer within MIN..MAX. The digits are
 # stripped in make first, so only a string of digits ever reaches the shell.

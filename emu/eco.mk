@@ -13,7 +13,8 @@ ECO_ELF       = $(call app_elf,ecosystem)
 SIM_SECONDS  ?= 120
 SEED         ?= 1
 ARENA        ?=
-ECO_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) $(if $(ARENA),--arena $(ARENA)) --out $(BUILD)/run
+ECO_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) --out $(BUILD)/run \
+                $(if $(ARENA),--arena $(ARENA),$(if $(WORLD),--arena $(ROOT)/emu/world/arenas/$(WORLD).json))
 ECO_RUN_USAGE = make run [SIM_SECONDS=1..86400] [SEED=0..4294967295] [ARENA=FILE]
 # Checked before anything is built (the seed is the program's 32-bit seed).
 ifneq ($(filter run,$(MAKECMDGOALS)),)

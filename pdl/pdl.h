@@ -259,9 +259,28 @@ static inline int pdl_add_ldouble_(int64_t *sum, long double v)
 typedef void (*pdl_process_fn)(void);
 
 /* Registers a process: runs every cycle (pv 0), or every 2^pv cycles.
- * Returns the process id (0, 1, ...) or an error. */
+ * Returns the process id (0, 1, ...) or an error. The macros keep the
+ * function's name as written (pdl_process_name: what a runner shows). */
 int add_process(pdl_process_fn f);
 int add_process_pv(pdl_process_fn f, int pv);
+int pdl_add_process_named(pdl_process_fn f, int pv, const char *name, const char *call);
+#define add_process(f) pdl_add_process_named((f), 0, #f, "add_process")
+#define add_process_pv(f, pv) pdl_add_process_named((f), (pv), #f, "add_process_pv")
+
+/* The processes as a runner outside the program sees them: how many, each
+ * one's name and how often it ran since run_pdl(). One table, in memory, so
+ * that the arena (emu/world) can read it from the emulated board too
+ * (pdl_process_table: count, runs[], then names[] as pointers). */
+struct pdl_process_table {
+    uint32_t count;
+    uint32_t runs[PDL_MAX_PROCESSES];
+    const char *names[PDL_MAX_PROCESSES];
+};
+extern struct pdl_process_table pdl_process_table;
+int pdl_process_count(void);
+/* "" for an id that is not a process. */
+const char *pdl_process_name(int id);
+uint32_t pdl_process_runs(int id);
 
 /* ---- time ---- */
 /* Time from the start of the previous cycle to the start of this one (the
@@ -297,6 +316,15 @@ int run_pdl(void);
 int pdl_stop(uint32_t timeout_ms);
 /* Forgets every process, quantity and binding (not while the cycle thread runs). */
 int pdl_reset(void);
+
+/* For main after run_pdl(): waits ms milliseconds of the program's time
+ * while the cycles run (board: the kernel clock; host: the simulated clock,
+ * the cycles in between run first), and the time since the start (board:
+ * since boot; host: the start of the current cycle). A program that keeps to
+ * pdl.h, these and the C library runs unchanged on the board and on the
+ * host (make run APP=x HOST=1). */
+int pdl_sleep_ms(uint32_t ms);
+uint32_t pdl_uptime_ms(void);
 
 struct pdl_stats {
     uint32_t cycles;            /* cycles completed */

@@ -166,7 +166,9 @@ int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max)
     return PDL_OK;
 }
 
-static int pdl_add(pdl_process_fn f, int pv, const char *fn)
+struct pdl_process_table pdl_process_table;
+
+int pdl_add_process_named(pdl_process_fn f, int pv, const char *name, const char *fn)
 {
     if (f == NULL)
         return pdl_refuse(PDL_ERR_NULL, fn);
@@ -178,11 +180,30 @@ static int pdl_add(pdl_process_fn f, int pv, const char *fn)
         return pdl_refuse(PDL_ERR_TOO_MANY_PROCESSES, fn);
     pdl_procs[pdl_nprocs] = f;
     pdl_pv[pdl_nprocs] = (uint8_t)pv;
+    pdl_process_table.names[pdl_nprocs] = name != NULL ? name : "";
+    pdl_process_table.runs[pdl_nprocs] = 0;
+    pdl_process_table.count = (uint32_t)pdl_nprocs + 1u;
     return pdl_nprocs++;
 }
 
-int add_process(pdl_process_fn f) { return pdl_add(f, 0, "add_process"); }
-int add_process_pv(pdl_process_fn f, int pv) { return pdl_add(f, pv, "add_process_pv"); }
+/* The functions behind the macros (a program that takes their address). */
+int (add_process)(pdl_process_fn f) { return pdl_add_process_named(f, 0, "", "add_process"); }
+int (add_process_pv)(pdl_process_fn f, int pv)
+{
+    return pdl_add_process_named(f, pv, "", "add_process_pv");
+}
+
+int pdl_process_count(void) { return (int)pdl_process_table.count; }
+
+const char *pdl_process_name(int id)
+{
+    return id >= 0 && (uint32_t)id < pdl_process_table.count ? pdl_process_table.names[id] : "";
+}
+
+uint32_t pdl_process_runs(int id)
+{
+    return id >= 0 && (uint32_t)id < pdl_process_table.count ? pdl_process_table.runs[id] : 0u;
+}
 
 /* Records one major cycle of the planned set (see pdl_plan_runs). Steps
  * pdl_sched through exactly 2^maxpv minor cycles, after which its state is
@@ -331,6 +352,7 @@ static void pdl_core_run_process(void *context, uint16_t index)
     pdl_procs[index]();
     pdl_current = -1;
     pdl_last_run_us[index] = pdl_cycle_start_us;
+    pdl_process_table.runs[index]++;
 }
 
 int32_t pdl_cycle_run(void)
@@ -352,6 +374,7 @@ int32_t pdl_cycle_run(void)
             pdl_current = index;
             pdl_procs[index]();
             pdl_last_run_us[index] = pdl_cycle_start_us;
+            pdl_process_table.runs[index]++;
         }
         pdl_current = -1;
     }
@@ -464,6 +487,7 @@ void pdl_core_reset(void)
     pdl_npending_int = 0;
     pdl_npending_float = 0;
     pdl_nprocs = 0;
+    pdl_process_table.count = 0;
     pdl_started = 0;
     pdl_current = -1;
     pdl_cycle_count_begun = 0;
