@@ -76,7 +76,10 @@
 #define PDL_ERR_NOT_FINITE        (-18)  /* NaN or infinity added to an integer quantity */
 
 /* ---- quantities ---- */
-enum pdl_kind { PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR };
+enum pdl_kind {
+    PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR,
+    PDL_KIND_INT8, PDL_KIND_INT16, PDL_KIND_UINT8, PDL_KIND_UINT16
+};
 
 /* Bookkeeping shared by every kind (first member of each quantity). */
 struct pdl_head {
@@ -94,6 +97,23 @@ struct pdl_quantity {
     int32_t min, max;
     int64_t sum;        /* this cycle's contributions */
 };
+
+/* Narrow integer quantities (the paper's "all native numerical datatypes
+ * of C"): value(q) has the quantity's own type, and the semantics are
+ * those of struct pdl_quantity: contributions summed exactly (64 bits,
+ * saturating), the result clipped to [min, max] (which lie within the
+ * type) at the end of the cycle. Actuators bind only int32 quantities. */
+#define PDL_NARROW_QUANTITY_(name, type) \
+    struct name {                        \
+        struct pdl_head head;            \
+        type cur;                        \
+        type min, max;                   \
+        int64_t sum;                     \
+    }
+PDL_NARROW_QUANTITY_(pdl_quantity_int8, int8_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_int16, int16_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_uint8, uint8_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_uint16, uint16_t);
 
 /* Float quantity (soft-float on the CPU32: about ten times the cost).
  * Float addition is not associative: the committed value may differ in
@@ -117,6 +137,11 @@ struct pdl_sensor {
 /* Declares a quantity to the runtime (before run_pdl()). */
 int add_quantity(struct pdl_quantity *q, int32_t min, int32_t max, int32_t initial);
 int add_fquantity(struct pdl_fquantity *q, float min, float max, float initial);
+int add_quantity_int8(struct pdl_quantity_int8 *q, int8_t min, int8_t max, int8_t initial);
+int add_quantity_int16(struct pdl_quantity_int16 *q, int16_t min, int16_t max, int16_t initial);
+int add_quantity_uint8(struct pdl_quantity_uint8 *q, uint8_t min, uint8_t max, uint8_t initial);
+int add_quantity_uint16(struct pdl_quantity_uint16 *q, uint16_t min, uint16_t max,
+                        uint16_t initial);
 int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max);
 
 /* value(q): the value of q from the previous cycle (an rvalue). */

@@ -92,13 +92,13 @@ check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 
 # ---- on the emulated board ----
 CHECKS += pdl-target
-PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench)
+PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench) $(call app_elf,pdl_types)
 
 .PHONY: check-pdl-target pdl-bench
 check-pdl-target:
 	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS)
-	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) ci/pytest-suite pdl-target pdl/tests/target
+	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS) $(PDL_TYPES_HOST)
+	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) PDL_TYPES_HOST=$(PDL_TYPES_HOST) ci/pytest-suite pdl-target pdl/tests/target
 
 # Every figure of pdl/README.md "Speed", printed and kept in build/pdl/bench.txt.
 pdl-bench:
@@ -107,3 +107,10 @@ pdl-bench:
 	@mkdir -p $(PDL_BUILD)
 	@BSCHED_QEMU=$(QEMU_M68K) $(PYTHON) pdl/tests/target/pdl_measure.py \
 	    $(call app_elf,pdl_bench) $(QEMU_M68K) | tee $(PDL_BUILD)/bench.txt
+
+# apps/pdl_types on the host runtime (its own main: pdl_sleep_ms runs the
+# cycles), to compare with the board's output line for line.
+PDL_TYPES_HOST := $(PDL_BUILD)/pdl_types_host
+$(PDL_TYPES_HOST): apps/pdl_types/main.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -DPDL_HOST=1 -o $@ $< $(PDL_HOST_SRCS)
