@@ -59,7 +59,7 @@ app_lib_srcs = $(filter-out $(APP_LIB_EXCLUDE),$(wildcard $(1)/*.c))
 define app_lib_template
 $$(FW_BUILD)/$(1)/lib$(2).a: $$(patsubst %,$$(FW_BUILD)/$(1)/obj/%.o,$$(call app_lib_srcs,$(2)))
 	@mkdir -p $$(@D)
-	rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
+	$$(call quiet,AR,$$@)rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
 endef
 
 # $(call app_template,NAME)
@@ -78,20 +78,20 @@ $(1)_LIBS    := $$(foreach d,$$(APP_LIB_DIRS),$$(if $$(call app_lib_srcs,$$(d)),
 
 $$($(1)_DIR)/obj/%.c.o: %.c
 	@mkdir -p $$(@D)
-	$$(CROSS_CC) $$($(1)_FLAGS) -c -o $$@ $$<
+	$$(call quiet,CC,$$<)$$(CROSS_CC) $$($(1)_FLAGS) -c -o $$@ $$<
 
 $$($(1)_DIR)/obj/%.S.o: %.S
 	@mkdir -p $$(@D)
-	$$(CROSS_CC) $$(FW_ASFLAGS) -c -o $$@ $$<
+	$$(call quiet,CC,$$<)$$(CROSS_CC) $$(FW_ASFLAGS) -c -o $$@ $$<
 
 $$(foreach d,$$(APP_LIB_DIRS),$$(eval $$(call app_lib_template,$(1),$$(d))))
 
 $$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT) \
                        $$(FW_LIBC_LIBS) $$(APP_LIB_LINK)
-	$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
+	$$(call quiet,LD,$$@)$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
 	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(APP_LIB_LINK) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
-	$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
-	$$(CROSS_SIZE) $$@
+	$$(call quiet,OBJCOPY,$$@)$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
+	$$(if $$(filter 1,$$(V)),$$(CROSS_SIZE) $$@,@true)
 
 .SECONDARY: $$($(1)_KOBJS) $$($(1)_AOBJS) $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(foreach d,$$(APP_LIB_DIRS),$$(call app_lib_srcs,$$(d))))
 endef

@@ -35,7 +35,7 @@ eco-host: $(ECO_HOST_LIB)
 $(ECO_HOST_LIB): emu/world/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
                  $(PDL_HOST_SRCS) pdl/pdl.h pdl/host/pdl_host.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
 	    emu/world/host/eco_host.c apps/ecosystem/eco_program.c $(PDL_HOST_SRCS)
 
 ECO_TEST_ENV = BSCHED_QEMU=$(QEMU_M68K) ECO_ELF=$(ECO_ELF) ECO_HOST_LIB=$(ECO_HOST_LIB)

@@ -37,20 +37,20 @@ PDL_HOST_LIB := $(PDL_BUILD)/libpdl_host.a
 pdl-host-lib: $(PDL_HOST_LIB)
 $(PDL_HOST_LIB): $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(PDL_BUILD)/host-obj
-	cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
-	rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
+	$(call quiet,HOSTCC,$@ objects)cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
+	$(call quiet,AR,$@)rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
 
 $(PDL_BUILD)/tests/test_pdl: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
 
 $(PDL_BUILD)/tests/test_pdl_sanitized: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) $(PDL_SANITIZE) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) $(PDL_SANITIZE) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
 
 $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
 # The README's complete example ("Programming with PDL"), extracted and run.
 PDL_README_TEST := $(PDL_BUILD)/tests/readme_example
@@ -61,7 +61,7 @@ $(PDL_BUILD)/readme_example.c: README.md
 	@test -s $@ || { echo "no C example under 'Programming with PDL' in README.md"; exit 1; }
 $(PDL_README_TEST): pdl/tests/readme_main.c $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
 ALL += $(PDL_README_TEST)
 
 # Misuse the compiler must refuse: each pdl/tests/refuse/*.c has to fail to
