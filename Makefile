@@ -39,6 +39,13 @@ check_whole_number = $(if $(filter-out 1,$(words $($(2))))$(call digits_removed,
     $(if $(shell [ $($(2)) -ge $(3) -a $($(2)) -le $(4) ] 2>/dev/null && echo ok),,\
         $(error $(1): $(2)=$($(2)): out of range $(3)..$(4) (usage: $(5)))))
 
+# $(call check_fraction,WHO,VAR,USAGE): as check_whole_number, for a probability:
+# one plain decimal number (digits, at least one, and at most one point) within 0..1.
+check_fraction = $(if $(filter-out 1,$(words $($(2))))$(if $(subst .,,$($(2))),,none)$(call digits_removed,$(subst .,,$($(2))))$(filter-out 1 2,$(words $(subst ., ,x$($(2))x))),\
+    $(error $(1): $(2)='$($(2))': not a number 0..1 (usage: $(3))),\
+    $(if $(shell awk 'BEGIN { exit !($($(2)) + 0 <= 1) }' 2>/dev/null && echo ok),,\
+        $(error $(1): $(2)=$($(2)): out of range 0..1 (usage: $(3)))))
+
 # The compiler runtime built for the CPU32 (soft-float, 64-bit division: LLVM's
 # compiler-rt builtins, ci/setup.d/m68k.sh). Every firmware image links it instead
 # of Debian's m68k libgcc, which is built for the 68020/68881 and traps on the CPU32.

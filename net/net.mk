@@ -122,6 +122,23 @@ CORRUPT  ?= 0.1
 BYTE_ERRORS ?= 0
 SEED     ?= 1
 FEC      ?= 0
+NET_SOAK_USAGE := make net-soak [BOARDS=1..4] [HOSTS=0..8] [MESSAGES=1..10000] [LOSS=P] [CORRUPT=P] [BYTE_ERRORS=P] [SEED=0..4294967295] [FEC=0|1] (P: 0..1)
+# Checked before anything is built: one line and status 2 for a bad value.
+ifneq ($(filter net-soak,$(MAKECMDGOALS)),)
+$(call check_whole_number,make net-soak,BOARDS,1,4,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,HOSTS,0,8,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,MESSAGES,1,10000,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,SEED,0,4294967295,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,LOSS,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,CORRUPT,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,BYTE_ERRORS,$(NET_SOAK_USAGE))
+ifneq ($(filter-out 0 1 on off yes no,$(FEC))$(filter-out 1,$(words $(FEC))),)
+$(error make net-soak: FEC='$(FEC)': use FEC=1 (Reed-Solomon frames) or FEC=0 (usage: $(NET_SOAK_USAGE)))
+endif
+ifeq ($(shell [ $$(( $(BOARDS) + $(HOSTS) )) -ge 2 ] && echo ok),)
+$(error make net-soak: BOARDS=$(BOARDS) HOSTS=$(HOSTS): at least 2 stations are needed (usage: $(NET_SOAK_USAGE)))
+endif
+endif
 net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode

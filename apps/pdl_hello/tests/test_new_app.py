@@ -46,6 +46,26 @@ static void probe(void)
 """
 
 
+def readme_behaviour():
+    """pdl/README.md "Write your first behaviour": its C block, as the part
+    before main and the lines for main."""
+    text = (ROOT / "pdl" / "README.md").read_text()
+    section = text.split("## Write your first behaviour", 1)[1].split("\n## ", 1)[0]
+    block = re.search(r"```c\n(.*?)```", section, re.S).group(1)
+    top, in_main = block.split("    /* in main, before run_pdl(): */\n")
+    return top, in_main
+
+
+def add_readme_behaviour(app):
+    """Edits the new app as the README tells its reader to."""
+    top, in_main = readme_behaviour()
+    src = (app / "main.c").read_text()
+    assert src.count("int main(void)\n{") == 1 and src.count("    r = run_pdl();") == 1
+    src = src.replace("int main(void)\n{", top + "\nint main(void)\n{", 1)
+    src = src.replace("    r = run_pdl();", in_main + "    r = run_pdl();", 1)
+    (app / "main.c").write_text(src)
+
+
 def add_probe(app):
     """Adds the probe process to the template's main.c."""
     src = (app / "main.c").read_text()
@@ -57,14 +77,15 @@ def add_probe(app):
     (app / "main.c").write_text(src)
 
 
-REPORT = re.compile(r"t=(\d+) s wheels=(-?\d+),(-?\d+) runs: cruise=(\d+) avoid=(\d+) probe=(\d+)")
+REPORT = re.compile(r"t=(\d+) s wheels=(-?\d+),(-?\d+) runs: cruise=(\d+) avoid=(\d+) "
+                    r"seek=(\d+) probe=(\d+)")
 
 
 def arena_run(app_name, *extra):
     r = make("run", f"APP={app_name}", "SIM_SECONDS=4", "SEED=3", *extra)
     assert r.returncode == 0, r.stdout + r.stderr
     reports = REPORT.findall(r.stdout)
-    runs = re.search(r"process runs: +cruise (\d+) avoid (\d+) probe (\d+)", r.stdout)
+    runs = re.search(r"process runs: +cruise (\d+) avoid (\d+) seek (\d+) probe (\d+)", r.stdout)
     digest = re.search(r"trajectory sha256: ([0-9a-f]{64})", r.stdout)
     assert reports and runs and digest, r.stdout
     return r.stdout, reports, [int(n) for n in runs.groups()], digest.group(1)
@@ -75,6 +96,7 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
     assert r.returncode == 0, r.stderr
     assert (new_app / "main.c").read_text() == (ROOT / "apps/pdl_hello/main.c").read_text()
     assert (new_app / "app.mk").read_text().count("\n") == 1     # one comment line
+    add_readme_behaviour(new_app)
     add_probe(new_app)
     r = make("firmware", f"APP={NAME}")
     assert r.returncode == 0, r.stdout + r.stderr
@@ -84,12 +106,13 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
         text += m.console.read_until(b"\n", timeout=10).decode("latin-1")
     lines = REPORT.findall(text)
     assert len(lines) == 2, text
-    for second, left, right, cruise, avoid, probe in lines:
+    for second, left, right, cruise, avoid, seek, probe in lines:
         # 1024 Hz / 10 ticks = 102.4 Hz: about 102 cycles a second; cruise every
         # cycle, avoid every second one, the probe every fourth.
         cycles = int(cruise)
         assert 97 * int(second) <= cycles <= 107 * int(second), text
         assert int(avoid) == (cycles + 1) // 2 and int(probe) == (cycles + 3) // 4, text
+        assert int(seek) == cycles, text
         # nothing connected: no infrared, so both wheels where cruise's pull
         # (400 - v) / 8 stops, 393
         assert int(left) == int(right) == 393, text
@@ -98,8 +121,8 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
     # and in the summary), and the same seed gives the same trajectory twice.
     out, reports, runs, digest = arena_run(NAME, "WORLD=default")
     assert "emulated RoboCube, lockstep" in out
-    assert runs[2] > 0 and abs(runs[0] - 4 * runs[2]) <= 4, out
-    assert int(reports[-1][5]) > 0, out
+    assert runs[3] > 0 and abs(runs[0] - 4 * runs[3]) <= 4 and runs[2] == runs[0], out
+    assert int(reports[-1][6]) > 0, out
     # the world moved the robot: the wheels differ once the infrared sees something,
     # or at least it travelled
     assert float(re.search(r"distance: +([0-9.]+) m", out).group(1)) > 0.2, out
@@ -109,8 +132,8 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
     # On the host, in the same arena: the probe ran there too, at the same rate.
     out, reports, runs, host_digest = arena_run(NAME, "HOST=1")
     assert "host fast mode" in out
-    assert runs[2] > 0 and runs[0] == 4 * runs[2], out
-    assert int(reports[-1][5]) > 0, out
+    assert runs[3] > 0 and runs[0] == 4 * runs[3] and runs[2] == runs[0], out
+    assert int(reports[-1][6]) > 0, out
     assert float(re.search(r"distance: +([0-9.]+) m", out).group(1)) > 0.2, out
 
 
