@@ -214,7 +214,7 @@ new-app:
 	    echo "make new-app: apps/$$name exists already; choose another NAME" >&2; exit 2; fi; \
 	mkdir -p "apps/$$name" && cp $(NEW_APP_TEMPLATE)/main.c "apps/$$name/main.c" && \
 	echo "# A PDL program: apps/$$name/main.c (make run APP=$$name)." > "apps/$$name/app.mk" && \
-	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name"
+	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name [WORLD=default: in the arena] [HOST=1: on the host, in the arena]"
 
 CHECKS += new-app
 .PHONY: check-new-app
