@@ -112,6 +112,9 @@ $$(call app_host_lib,$(1)): $$($(1)_SRCS) $$(wildcard apps/$(1)/*.h) $$(APP_HOST
 	    -I$$(ROOT) -I$$(ROOT)/bsched -Iapps/$(1) -o $$@ $$($(1)_SRCS) $$(APP_HOST_DRIVER) $$(PDL_HOST_SRCS)
 endef
 $(foreach a,$(APPS),$(eval $(call app_host_template,$(a))))
+# make host-lib [APP=NAME]: that library (phony: quiet when it is up to date).
+.PHONY: host-lib
+host-lib: $(call app_host_lib,$(APP))
 
 ifeq ($(filter $(APP),$(APPS)),)
 $(if $(filter run firmware,$(MAKECMDGOALS)),$(error APP=$(APP): no such image (have: $(APPS))))
@@ -186,7 +189,7 @@ QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
 run:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER)$(RUN_IN_ARENA),base)
 	@$(MAKE) --no-print-directory $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
-	    $(if $(and $(filter 1,$(HOST)),$(if $($(APP)_RUNNER),,1)),$(call app_host_lib,$(APP)))
+	    $(if $(and $(filter 1,$(HOST)),$(if $($(APP)_RUNNER),,1)),host-lib)
 ifneq ($($(APP)_RUNNER),)
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) $($(APP)_RUNNER); rc=$$?; \
 	    [ $$rc -eq 0 ] || { [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ] && echo "make run: stopped after RUN_SECONDS=$(RUN_SECONDS) s" >&2; }
