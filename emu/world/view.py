@@ -112,7 +112,7 @@ class LiveView:
         return self.live.__exit__(*exc)
 
     def update(self, world, rec, force=False):
-        if rec.runs is not self.runs_before:
+        if rec.runs != self.runs_before:       # a new reading (a final repeat changes nothing)
             self.runs_last_second = runs_delta(rec.runs, self.runs_before)
             self.runs_before = rec.runs
         if rec.n % 10 == 0:
@@ -145,11 +145,15 @@ class LiveView:
         info.add_row("station", f"{world.station_available_w():.0f} W available")
         info.add_row("competitors", " ".join("on" if c.get("on", True) else "off"
                                              for c in world.competitors))
-        if st:
-            info.add_row("hunger", f"{st.get('hunger', 0) / 10:.0f} %")
+        # What the program reports: the ecosystem's status line has all of
+        # it, another program's host library the motors, a board image none.
+        if "hunger" in st:
+            info.add_row("hunger", f"{st['hunger'] / 10:.0f} %")
+        if "motor" in st:
             info.add_row("motors L/R", f"{st['motor'][0]:5d} {st['motor'][1]:5d} permille")
-            info.add_row("ran this cycle", " ".join(st.get("ran", [])) or "-")
-        else:
+        if "ran" in st:
+            info.add_row("ran this cycle", " ".join(st["ran"]) or "-")
+        if not st and not rec.runs:
             info.add_row("program", "no status from the robot yet")
         info.add_row("runs (last second)", runs_text(self.runs_last_second))
         info.add_row("overruns", str(rec.overruns))
@@ -158,6 +162,8 @@ class LiveView:
                      f"{world.collisions['obstacle']}, competitors {world.collisions['competitor']}")
         info.add_row("competitor hits", str(world.competitor_hits))
         info.add_row("distance", f"{world.distance:.1f} m")
+        if not st.get("contrib"):
+            return Columns([arena, Panel(info, title="robot")])
         contrib = Table(title="behaviour contributions (last run)", show_edge=False)
         contrib.add_column("process")
         contrib.add_column("speed", justify="right")
