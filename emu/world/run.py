@@ -93,6 +93,12 @@ def parse_args(argv):
     for path in (a.elf, a.qemu, a.host_lib):
         if path and not os.path.exists(path):
             ap.error(f"{path}: no such file")
+    if a.host:
+        import ctypes
+        try:
+            ctypes.CDLL(os.path.abspath(a.host_lib))
+        except OSError as e:
+            ap.error(f"--host-lib {a.host_lib}: not a loadable library ({e})")
     return a
 
 
