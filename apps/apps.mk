@@ -188,7 +188,7 @@ ARENA_RUN = $(PYTHON) $(ROOT)/emu/world/run.py --arena $(ROOT)/emu/world/arenas/
 QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
 run:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER)$(RUN_IN_ARENA),base)
-	@$(MAKE) --no-print-directory $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
+	@$(MAKE) --no-print-directory $(if $(filter 1,$(V)),,-s) $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
 	    $(if $(and $(filter 1,$(HOST)),$(if $($(APP)_RUNNER),,1)),host-lib)
 ifneq ($($(APP)_RUNNER),)
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) $($(APP)_RUNNER); rc=$$?; \
