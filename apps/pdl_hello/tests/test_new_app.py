@@ -1,7 +1,10 @@
-"""make new-app: a new PDL program from the template (apps/pdl_hello) builds and
-runs on the emulated board at once: its main declares a quantity, adds two
-processes and calls run_pdl(), and the cycle thread runs them. Bad names are
-refused with one line and exit 2, and nothing is created.
+"""make new-app: a new PDL program from the template (apps/pdl_hello), edited
+as pdl/README.md "Write your first behaviour" says and with one more process
+(the probe), runs its processes three ways: on the emulated board alone, on
+the board in the arena (make run WORLD=default, twice: the same seed gives
+the same trajectory digest) and on the host runtime in the arena (HOST=1);
+each time main's report and the summary show the processes' runs. Bad names
+are refused with one line and exit 2, and nothing is created.
 
 Environment (make check-new-app): BSCHED_QEMU.
 """
