@@ -103,6 +103,17 @@ def test_new_app_runs_its_processes_on_the_board(new_app):
     add_probe(new_app)
     r = make("firmware", f"APP={NAME}")
     assert r.returncode == 0, r.stdout + r.stderr
+    # quiet build lines: one short line a file, no compiler command ...
+    assert f"  CC      apps/{NAME}/main.c\n" in r.stdout, r.stdout
+    assert f"  LD      build/firmware/{NAME}/{NAME}.elf\n" in r.stdout, r.stdout
+    assert "m68k-linux-gnu-gcc" not in r.stdout, r.stdout
+    # ... and with V=1 the full commands
+    (new_app / "main.c").touch()
+    r = make("firmware", f"APP={NAME}", "V=1")
+    assert r.returncode == 0, r.stdout + r.stderr
+    assert re.search(rf"m68k-linux-gnu-gcc .* -c -o \S+/{NAME}/obj/apps/{NAME}/main\.c\.o apps/{NAME}/main\.c",
+                     r.stdout), r.stdout
+    assert "  CC      " not in r.stdout, r.stdout
     elf = ROOT / "build" / "firmware" / NAME / f"{NAME}.elf"
     with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", "shift=8,sleep=off"]) as m:
         text = m.console.read_until(b"t=2 s", timeout=30).decode("latin-1")
