@@ -44,6 +44,22 @@ def soak_unpack(msg):
     return sender, number
 
 
+def show_live(boards, period=0.2):
+    """Prints each board's console lines as they come, "station N: LINE"
+    (--live: make run APP=netnode)."""
+    shown = [0] * len(boards)
+    while True:
+        for i, b in enumerate(boards):
+            text = b.text()
+            end = text.rfind("\n") + 1
+            for line in text[shown[i]:end].splitlines():
+                # (not QEMU's own word that the soak stopped it)
+                if line.strip() and "terminating on signal" not in line:
+                    print(f"station {b.station}: {line}", flush=True)
+            shown[i] = max(shown[i], end)
+        time.sleep(period)
+
+
 def run(args):
     workdir = tempfile.mkdtemp(prefix="net-soak-")
     sock = os.path.join(workdir, "air.sock")
@@ -63,6 +79,8 @@ def run(args):
         for n, station in enumerate(host_stations):
             hosts.append(HostSoak(Peer(MediumTransport(sock), station, seed=args.seed + n,
                                        fec=args.fec), args.boards, args.messages))
+        if args.live:
+            threading.Thread(target=show_live, args=(boards,), daemon=True).start()
         senders = [threading.Thread(target=h.send_all, daemon=True) for h in hosts]
         for t in senders:
             t.start()
@@ -154,7 +172,7 @@ class HostSoak:
 
 SOAK_USAGE = ("soak.py [--boards 1..4] [--hosts 0..8 | --no-host] [--messages 1..10000] "
               "[--loss P] [--corrupt P] [--noise P] [--byte-errors P] [--fec] [--seed 0..4294967295] "
-              "[--timeout SECONDS] [--linger 1..3600] [--elf FILE] [-v]  (P: a probability 0..1)")
+              "[--timeout SECONDS] [--linger 1..3600] [--elf FILE] [-v] [--live]  (P: a probability 0..1)")
 
 
 class SoakParser(argparse.ArgumentParser):
@@ -203,7 +221,8 @@ def main(argv=None):
     ap.add_argument("--no-host", dest="hosts", action="store_const", const=0)
     ap.add_argument("--elf", default=os.path.join(ROOT, "build", "firmware", "netnode",
                                                   "netnode.elf"))
-    ap.add_argument("-v", "--verbose", action="store_true")
+    ap.add_argument("-v", "--verbose", action="store_true", help="every board's console at the end")
+    ap.add_argument("--live", action="store_true", help="every board's console lines as they come")
     args = ap.parse_args(argv)
     if args.boards + args.hosts < 2:
         ap.error("there must be at least 2 stations (boards + host peers)")
