@@ -18,6 +18,18 @@ RESULTS := $(BUILD)/results
 PYTHON := $(BUILD)/venv/bin/python
 # Writes build/results/$(1).txt from a 'P F' pair: $(call record,SUITE,PASSED,FAILED)
 record = mkdir -p $(RESULTS) && echo "$(2) passed, $(3) failed" > $(RESULTS)/$(1).txt
+empty :=
+space := $(empty) $(empty)
+# Build lines: one short line per step ("  CC      kernel/k_sched.c") unless
+# V=1, which shows every command in full. A recipe line starts with
+# $(call quiet,WHAT,FILE) and then its command:
+#     $(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<
+V ?= 0
+ifeq ($(V),1)
+quiet =
+else
+quiet = @printf '  %-7s %s\n' '$(1)' '$(patsubst $(ROOT)/%,%,$(2))';
+endif
 # $(call check_whole_number,WHO,VAR,MIN,MAX,USAGE): stops make (status 2) with one line
 # unless $(VAR) is one plain decimal integer within MIN..MAX. The digits are
 # stripped in make first, so only a string of digits ever reaches the shell.
@@ -26,6 +38,13 @@ check_whole_number = $(if $(filter-out 1,$(words $($(2))))$(call digits_removed,
     $(error $(1): $(2)='$($(2))': not a whole number (usage: $(5))),\
     $(if $(shell [ $($(2)) -ge $(3) -a $($(2)) -le $(4) ] 2>/dev/null && echo ok),,\
         $(error $(1): $(2)=$($(2)): out of range $(3)..$(4) (usage: $(5)))))
+
+# $(call check_fraction,WHO,VAR,USAGE): as check_whole_number, for a probability:
+# one plain decimal number (digits, at least one, and at most one point) within 0..1.
+check_fraction = $(if $(filter-out 1,$(words $($(2))))$(if $(subst .,,$($(2))),,none)$(call digits_removed,$(subst .,,$($(2))))$(filter-out 1 2,$(words $(subst ., ,x$($(2))x))),\
+    $(error $(1): $(2)='$($(2))': not a number 0..1 (usage: $(3))),\
+    $(if $(shell awk 'BEGIN { exit !($($(2)) + 0 <= 1) }' 2>/dev/null && echo ok),,\
+        $(error $(1): $(2)=$($(2)): out of range 0..1 (usage: $(3)))))
 
 # The compiler runtime built for the CPU32 (soft-float, 64-bit division: LLVM's
 # compiler-rt builtins, ci/setup.d/m68k.sh). Every firmware image links it instead

@@ -25,6 +25,18 @@
 #                  drivers/board_main.c, which starts the board and runs an
 #                  ordinary int main(void) as a thread
 #   NAME_QUIT      how the image itself ends a run, for make run's banner
+#   NAME_WORLD     the arena make run puts the image's robot in when WORLD is
+#                  not given (default none: the board alone)
+#
+# Where make run runs the program (a PDL program with an ordinary main):
+#   make run APP=x                 the emulated board alone (console on stdio)
+#   make run APP=x WORLD=default   the board in the arena emu/world/arenas/default.json,
+#                                  in lockstep; the world feeds the robot's sensors and
+#                                  takes its wheels (the wiring: pdl/robot.h)
+#   make run APP=x HOST=1          the same program on the PDL host runtime in the same
+#                                  arena (WORLD defaults to default), fast
+# In an arena: SIM_SECONDS (virtual seconds, default 120) and SEED (the world's
+# sensor noise) as for the ecosystem (emu/eco.mk), the summary in build/run/x/.
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
 APP_DEFAULT := ecosystem
@@ -47,7 +59,7 @@ app_lib_srcs = $(filter-out $(APP_LIB_EXCLUDE),$(wildcard $(1)/*.c))
 define app_lib_template
 $$(FW_BUILD)/$(1)/lib$(2).a: $$(patsubst %,$$(FW_BUILD)/$(1)/obj/%.o,$$(call app_lib_srcs,$(2)))
 	@mkdir -p $$(@D)
-	rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
+	$$(call quiet,AR,$$@)rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
 endef
 
 # $(call app_template,NAME)
@@ -66,25 +78,43 @@ $(1)_LIBS    := $$(foreach d,$$(APP_LIB_DIRS),$$(if $$(call app_lib_srcs,$$(d)),
 
 $$($(1)_DIR)/obj/%.c.o: %.c
 	@mkdir -p $$(@D)
-	$$(CROSS_CC) $$($(1)_FLAGS) -c -o $$@ $$<
+	$$(call quiet,CC,$$<)$$(CROSS_CC) $$($(1)_FLAGS) -c -o $$@ $$<
 
 $$($(1)_DIR)/obj/%.S.o: %.S
 	@mkdir -p $$(@D)
-	$$(CROSS_CC) $$(FW_ASFLAGS) -c -o $$@ $$<
+	$$(call quiet,CC,$$<)$$(CROSS_CC) $$(FW_ASFLAGS) -c -o $$@ $$<
 
 $$(foreach d,$$(APP_LIB_DIRS),$$(eval $$(call app_lib_template,$(1),$$(d))))
 
 $$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT) \
                        $$(FW_LIBC_LIBS) $$(APP_LIB_LINK)
-	$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
+	$$(call quiet,LD,$$@)$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
 	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(APP_LIB_LINK) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
-	$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
-	$$(CROSS_SIZE) $$@
+	$$(call quiet,OBJCOPY,$$@)$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
+	$$(if $$(filter 1,$$(V)),$$(CROSS_SIZE) $$@,@true)
 
 .SECONDARY: $$($(1)_KOBJS) $$($(1)_AOBJS) $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(foreach d,$$(APP_LIB_DIRS),$$(call app_lib_srcs,$$(d))))
 endef
 
 $(foreach a,$(APPS),$(eval $(call app_template,$(a))))
+
+# A program on the PDL host runtime, for the arena's host mode (make run
+# APP=NAME HOST=1): its sources with main renamed, the arena's driver of main
+# and the cycles (emu/world/host/pdl_app_host.c) and the host runtime, as one
+# shared library the arena loads (emu/world/hostmode.py). PDL_HOST is defined,
+# for the few lines a program keeps for the board (pdl/pdl_board.h).
+app_host_lib = $(BUILD)/world/apps/$(1)/lib$(1)_host.so
+APP_HOST_DRIVER := emu/world/host/pdl_app_host.c
+define app_host_template
+$$(call app_host_lib,$(1)): $$($(1)_SRCS) $$(wildcard apps/$(1)/*.h) $$(APP_HOST_DRIVER) $$(PDL_HOST_SRCS) $$(PDL_HEADERS)
+	@mkdir -p $$(@D)
+	$$(call quiet,HOSTCC,$$@)$$(HOST_CC) $$(HOST_CFLAGS) -fPIC -shared -pthread -DPDL_HOST=1 -Dmain=pdl_app_main \
+	    -I$$(ROOT) -I$$(ROOT)/bsched -Iapps/$(1) -o $$@ $$($(1)_SRCS) $$(APP_HOST_DRIVER) $$(PDL_HOST_SRCS)
+endef
+$(foreach a,$(APPS),$(eval $(call app_host_template,$(a))))
+# make host-lib [APP=NAME]: that library (phony: quiet when it is up to date).
+.PHONY: host-lib
+host-lib: $(call app_host_lib,$(APP))
 
 ifeq ($(filter $(APP),$(APPS)),)
 $(if $(filter run firmware,$(MAKECMDGOALS)),$(error APP=$(APP): no such image (have: $(APPS))))
@@ -101,11 +131,52 @@ firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 # timeout or a traceback from a runner (the ecosystem's SEED and SIM_SECONDS:
 # emu/eco.mk).
 RUN_SECONDS ?=
+HOST ?=
+WORLD ?=
+WORLDS    := $(sort $(basename $(notdir $(wildcard emu/world/arenas/*.json))))
+RUN_WORLD := $(or $(WORLD),$($(APP)_WORLD),$(if $(filter 1,$(HOST)),default),none)
+RUN_USAGE := make run [APP=NAME] [WORLD=none|$(subst $(space),|,$(WORLDS))] [HOST=0|1] [RUN_SECONDS=1..86400] [SIM_SECONDS=1..86400] [SEED=0..4294967295]
+RUN_IN_ARENA := $(if $(filter none,$(RUN_WORLD)),,1)
 ifneq ($(filter run,$(MAKECMDGOALS)),)
 ifneq ($(RUN_SECONDS),)
-$(call check_whole_number,make run,RUN_SECONDS,1,86400,make run [APP=NAME] [RUN_SECONDS=1..86400])
+$(call check_whole_number,make run,RUN_SECONDS,1,86400,$(RUN_USAGE))
+endif
+ifneq ($(filter-out 0 1,$(HOST))$(word 2,$(HOST)),)
+$(error make run: HOST='$(HOST)': use HOST=1 (the host runtime) or HOST=0 (usage: $(RUN_USAGE)))
+endif
+ifneq ($(filter-out none $(WORLDS),$(RUN_WORLD))$(word 2,$(RUN_WORLD)),)
+$(error make run: WORLD='$(WORLD)': no such arena (have: none $(WORLDS); emu/world/arenas/NAME.json) (usage: $(RUN_USAGE)))
+endif
+ifeq ($(HOST)$(RUN_WORLD),1none)
+$(error make run: HOST=1 runs the program in an arena; WORLD=none has no host mode (usage: $(RUN_USAGE)))
+endif
+ifneq ($(filter 1,$(HOST)),)
+ifneq ($(filter self,$($(APP)_BOOT)),)
+ifeq ($(filter ecosystem,$(APP)),)
+$(error make run: APP=$(APP) cannot run on the host: its main starts the board itself (HOST=1 runs programs with an ordinary main))
 endif
 endif
+endif
+ifneq ($($(APP)_RUNNER),)
+ifeq ($(filter ecosystem,$(APP)),)
+ifneq ($(WORLD),)
+$(error make run: APP=$(APP) has a set-up of its own; WORLD does not apply (usage: $(RUN_USAGE)))
+endif
+else ifeq ($(WORLD),none)
+$(error make run: APP=ecosystem is the arena's robot; WORLD=none does not apply (usage: $(RUN_USAGE)))
+endif
+endif
+ifneq ($(RUN_IN_ARENA),)
+$(call check_whole_number,make run,SIM_SECONDS,1,86400,$(RUN_USAGE))
+$(call check_whole_number,make run,SEED,0,4294967295,$(RUN_USAGE))
+endif
+endif
+
+# make run in an arena (emu/world/run.py): the image on the emulated board in
+# lockstep, or with HOST=1 the program's host library (app_host_lib).
+ARENA_RUN = $(PYTHON) $(ROOT)/emu/world/run.py --arena $(ROOT)/emu/world/arenas/$(RUN_WORLD).json \
+    --seconds $(SIM_SECONDS) --seed $(SEED) --out $(BUILD)/run/$(APP) \
+    $(if $(filter 1,$(HOST)),--host --host-lib $(call app_host_lib,$(APP)),--elf $(FW_ELF) --qemu $(QEMU_M68K))
 
 # The console is the emulator's stdio and carries bytes only, with -monitor
 # none: not QEMU's no-graphics mode, which multiplexes its monitor onto stdin
@@ -116,10 +187,15 @@ endif
 # the one place make run names the console; the shell's tests check it.
 QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
 run:
-	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER),base)
-	@$(MAKE) --no-print-directory firmware $($(APP)_RUN_DEPS) APP=$(APP)
+	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER)$(RUN_IN_ARENA),base)
+	@$(MAKE) --no-print-directory $(if $(filter 1,$(V)),,-s) $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
+	    $(if $(and $(filter 1,$(HOST)),$(if $($(APP)_RUNNER),,1)),host-lib)
 ifneq ($($(APP)_RUNNER),)
-	@$($(APP)_RUNNER)
+	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) $($(APP)_RUNNER); rc=$$?; \
+	    [ $$rc -eq 0 ] || { [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ] && echo "make run: stopped after RUN_SECONDS=$(RUN_SECONDS) s" >&2; }
+else ifneq ($(RUN_IN_ARENA),)
+	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) $(ARENA_RUN); rc=$$?; \
+	    [ $$rc -eq 0 ] || { [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ] && echo "make run: stopped after RUN_SECONDS=$(RUN_SECONDS) s" >&2; }
 else
 	@echo "make run: booting $(FW_ELF) on $(QEMU_M68K) -M robocube (console = DUART B on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s)$(if $($(APP)_QUIT),; $($(APP)_QUIT)); quit with Ctrl-C)" >&2
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
@@ -141,7 +217,7 @@ new-app:
 	    echo "make new-app: apps/$$name exists already; choose another NAME" >&2; exit 2; fi; \
 	mkdir -p "apps/$$name" && cp $(NEW_APP_TEMPLATE)/main.c "apps/$$name/main.c" && \
 	echo "# A PDL program: apps/$$name/main.c (make run APP=$$name)." > "apps/$$name/app.mk" && \
-	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name"
+	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name [WORLD=default: in the arena] [HOST=1: on the host, in the arena]"
 
 CHECKS += new-app
 .PHONY: check-new-app

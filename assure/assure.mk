@@ -24,7 +24,7 @@ CHECKS += bsched-edges sanitize bsched-targets bsched-bigendian misra analyze co
 # ---------------------------------------------------------------- edge tests of bsched.c
 $(BUILD)/tests/test_bsched_edges: bsched/tests/test_bsched_edges.c bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ $< bsched/bsched.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ $< bsched/bsched.c -lcmocka
 ALL += $(BUILD)/tests/test_bsched_edges
 
 # A cmocka program's counts: $(call cmocka_counts,OUTPUT-VAR) sets p and f.
@@ -130,7 +130,7 @@ stack check-stack:
 CPU32_ISA_PROBE := $(ASSURE)/cpu32-isa/libgcc-68020-probe.elf
 $(CPU32_ISA_PROBE): assure/cpu32_isa_probe.c
 	@mkdir -p $(@D)
-	$(CROSS_CC) -mcpu=cpu32 -Os -nostdlib -o $@ $< -lgcc
+	$(call quiet,LD,$@)$(CROSS_CC) -mcpu=cpu32 -Os -nostdlib -o $@ $< -lgcc
 CPU32_ISA_ELFS = $(foreach a,$(APPS),$(call app_elf,$(a))) $(FW_FAULT_ELFS) $(K_TEST_ELFS) \
                  $(BENCH_DIR)/bench-cpu32.elf
 .PHONY: check-cpu32-isa

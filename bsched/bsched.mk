@@ -12,11 +12,11 @@ HOST_UNIT_CHECKS += bsched-unit
 
 $(BUILD)/bin/bsched-plan: tools/bsched-plan.c bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PLAN_CFLAGS) -o $@ tools/bsched-plan.c bsched/bsched.c
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PLAN_CFLAGS) -o $@ tools/bsched-plan.c bsched/bsched.c
 
 $(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/tests/table2.h bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ bsched/tests/test_bsched.c bsched/bsched.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ bsched/tests/test_bsched.c bsched/bsched.c -lcmocka
 
 # bsched.c (and Fig. 7's reference engine) must compile warning-free for the host and for the CPU32 target.
 .PHONY: check-bsched-build check-bsched-unit check-bsched-plan

@@ -20,11 +20,11 @@ HOST_UNIT_CHECKS += drivers-unit
 
 $(DRV_BUILD)/tests/test_i2c_fsm: drivers/tests/host/test_i2c_fsm.c drivers/i2c_fsm.c drivers/i2c_fsm.h drivers/i2c.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -DI2C_FSM_FAKE_HW -o $@ $< drivers/i2c_fsm.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -DI2C_FSM_FAKE_HW -o $@ $< drivers/i2c_fsm.c -lcmocka
 
 $(DRV_BUILD)/tests/test_analog: drivers/tests/host/test_analog.c drivers/analog.c drivers/analog.h drivers/i2c.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ $< drivers/analog.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ $< drivers/analog.c -lcmocka
 
 check-drivers-unit: $(DRV_HOST_TESTS)
 	@$(SETUP) base

@@ -16,11 +16,11 @@ ALL += $(MOTION_UNIT_TESTS)
 
 $(MOTION_BUILD)/test_motor_pi: drivers/tests/test_motor_pi.c drivers/motor_pi.c drivers/motor_pi.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_motor_pi.c drivers/motor_pi.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_motor_pi.c drivers/motor_pi.c -lcmocka
 
 $(MOTION_BUILD)/test_odometry: drivers/tests/test_odometry.c drivers/odometry.c drivers/odometry.h drivers/drv_err.c
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_odometry.c drivers/odometry.c \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -I$(ROOT) -o $@ drivers/tests/test_odometry.c drivers/odometry.c \
 	    drivers/drv_err.c -lcmocka -lm
 
 check-motion-unit: $(MOTION_UNIT_TESTS)

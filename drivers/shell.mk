@@ -13,11 +13,11 @@ HOST_UNIT_CHECKS += shell-unit
 
 $(SHELL_UNIT_BUILD)/test_sai: drivers/tests/test_sai.c drivers/sai.c drivers/sai.h drivers/drv_err.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_sai.c drivers/sai.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_sai.c drivers/sai.c -lcmocka
 
 $(SHELL_UNIT_BUILD)/test_line_edit: drivers/tests/test_line_edit.c drivers/line_edit.c drivers/line_edit.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_line_edit.c drivers/line_edit.c -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(SHELL_UNIT_CFLAGS) -o $@ drivers/tests/test_line_edit.c drivers/line_edit.c -lcmocka
 
 .PHONY: check-shell-unit
 check-shell-unit: $(SHELL_UNIT_TESTS)

@@ -13,7 +13,8 @@ ECO_ELF       = $(call app_elf,ecosystem)
 SIM_SECONDS  ?= 120
 SEED         ?= 1
 ARENA        ?=
-ECO_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) $(if $(ARENA),--arena $(ARENA)) --out $(BUILD)/run
+ECO_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) --out $(BUILD)/run \
+                $(if $(ARENA),--arena $(ARENA),$(if $(WORLD),--arena $(ROOT)/emu/world/arenas/$(WORLD).json))
 ECO_RUN_USAGE = make run [SIM_SECONDS=1..86400] [SEED=0..4294967295] [ARENA=FILE]
 # Checked before anything is built (the seed is the program's 32-bit seed).
 ifneq ($(filter run,$(MAKECMDGOALS)),)
@@ -34,7 +35,7 @@ eco-host: $(ECO_HOST_LIB)
 $(ECO_HOST_LIB): emu/world/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
                  $(PDL_HOST_SRCS) pdl/pdl.h pdl/host/pdl_host.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
 	    emu/world/host/eco_host.c apps/ecosystem/eco_program.c $(PDL_HOST_SRCS)
 
 ECO_TEST_ENV = BSCHED_QEMU=$(QEMU_M68K) ECO_ELF=$(ECO_ELF) ECO_HOST_LIB=$(ECO_HOST_LIB)

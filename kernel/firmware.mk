@@ -60,21 +60,21 @@ $(CPU32_RT) $(FW_LIBC_LIBS):
 
 $(FW_BUILD)/obj/%.c.o: %.c
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<
 
 $(FW_BUILD)/obj/%.S.o: %.S
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
 
 # One image per fault kind; FAULT_KIND numbers follow kernel/tests/target/fault_image.c.
 fault_kind_index  = $(strip $(foreach i,1 2 3 4,$(if $(filter $(1),$(word $(i),$(FW_FAULT_KINDS))),$(i))))
 
 $(FW_BUILD)/tests/fault-%.o: kernel/tests/target/fault_image.c
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(FW_CFLAGS) -DFAULT_KIND=$(call fault_kind_index,$*) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -DFAULT_KIND=$(call fault_kind_index,$*) -c -o $@ $<
 
 $(FW_BUILD)/tests/fault-%.elf: $(FW_BUILD)/tests/fault-%.o $(FW_BASE_OBJS) $(FW_LDSCRIPT)
-	$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(FW_BASE_OBJS) $<
+	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(FW_BASE_OBJS) $<
 
 .PRECIOUS: $(FW_BUILD)/tests/fault-%.o
 

@@ -29,7 +29,7 @@ kernel-host-tests: $(K_HOST_TESTS)
 $(K_BUILD)/tests/test_k_%: kernel/tests/host/test_k_%.c $(K_CORE_SRCS) $(K_HOST_PORT) \
                            $(K_HOST_LIB) bsched/bsched.c $(K_HEADERS) kernel/tests/host/arch/*.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(K_HOST_CFLAGS) -o $@ $< $(K_CORE_SRCS) $(K_HOST_PORT) $(K_HOST_LIB) \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(K_HOST_CFLAGS) -o $@ $< $(K_CORE_SRCS) $(K_HOST_PORT) $(K_HOST_LIB) \
 	    bsched/bsched.c -lcmocka
 
 check-kernel-unit: $(K_HOST_TESTS)
@@ -62,18 +62,18 @@ kernel-target: $(K_TEST_ELFS)
 
 $(K_BUILD)/target/obj/%.c.o: %.c
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(K_CROSS_CFLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(K_CROSS_CFLAGS) -c -o $@ $<
 
 $(K_BUILD)/target/obj/%.S.o: %.S
 	@mkdir -p $(@D)
-	$(CROSS_CC) -mcpu=cpu32 -g -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) -mcpu=cpu32 -g -c -o $@ $<
 
 $(K_BUILD)/target/ktest-%.o: kernel/tests/target-kernel/ktest.c
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(K_CROSS_CFLAGS) -DKTEST_MODE=$(call k_mode_index,$*) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(K_CROSS_CFLAGS) -DKTEST_MODE=$(call k_mode_index,$*) -c -o $@ $<
 
 $(K_BUILD)/target/ktest-%.elf: $(K_BUILD)/target/ktest-%.o $(K_TARGET_OBJS) $(FW_BASE_OBJS) $(FW_LDSCRIPT)
-	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) $(K_TARGET_OBJS) $<
+	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) $(K_TARGET_OBJS) $<
 
 .PRECIOUS: $(K_BUILD)/target/ktest-%.o $(K_BUILD)/target/obj/%.o
 .SECONDARY: $(K_TARGET_OBJS)

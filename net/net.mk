@@ -32,7 +32,7 @@ HOST_UNIT_CHECKS += net-unit
 
 $(NET_BUILD)/tests/test_%: net/tests/test_%.c $(wildcard net/*.h) $(wildcard net/*.c)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $< $(net_test_srcs_$*) -lcmocka $(net_test_libs_$*)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $< $(net_test_srcs_$*) -lcmocka $(net_test_libs_$*)
 
 check-net-unit:
 	@$(SETUP) base net
@@ -57,10 +57,10 @@ NET_XDR_CPU32_FLAGS := -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Ws
                        -mcpu=cpu32 -static -I$(ROOT)
 $(NET_BUILD)/tests/xdr_lengths: $(NET_XDR_WIDTH_SRCS) net/xdr.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $(NET_XDR_WIDTH_SRCS)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ $(NET_XDR_WIDTH_SRCS)
 $(NET_BUILD)/tests/xdr_lengths_m32: $(NET_XDR_WIDTH_SRCS) net/xdr.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -m32 -o $@ $(NET_XDR_WIDTH_SRCS)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -m32 -o $@ $(NET_XDR_WIDTH_SRCS)
 $(NET_BUILD)/tests/xdr_lengths_cpu32: $(NET_XDR_WIDTH_SRCS) net/xdr.h
 	@mkdir -p $(@D)
 	m68k-linux-gnu-gcc $(NET_XDR_CPU32_FLAGS) -o $@ $(NET_XDR_WIDTH_SRCS)
@@ -81,17 +81,17 @@ NETNODE_ELF := $(call app_elf,netnode)
 # The XDR sample tool the Python comparison (test_xdr_python.py) runs.
 $(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/tests/xdr_sample.h net/xdr.c net/xdr.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/xdr_sample.c net/xdr.c
 
 # The FEC tool the reedsolo comparison (test_fec_python.py) runs.
 $(NET_BUILD)/tests/fec_sample: net/tests/fec_sample.c net/tests/sample_hex.h net/fec.c net/fec.h net/rs.c net/rs.h net/crc16.c
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/fec_sample.c net/fec.c net/rs.c net/crc16.c
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/fec_sample.c net/fec.c net/rs.c net/crc16.c
 
 # The wire constants the host peer's copies are checked against (test_wire_constants.py).
 $(NET_BUILD)/tests/wire_constants: net/tests/wire_constants.c $(wildcard net/*.h)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/wire_constants.c
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/wire_constants.c
 
 check-net-target:
 	@$(SETUP) base m68k qemu
@@ -122,6 +122,23 @@ CORRUPT  ?= 0.1
 BYTE_ERRORS ?= 0
 SEED     ?= 1
 FEC      ?= 0
+NET_SOAK_USAGE := make net-soak [BOARDS=1..4] [HOSTS=0..8] [MESSAGES=1..10000] [LOSS=P] [CORRUPT=P] [BYTE_ERRORS=P] [SEED=0..4294967295] [FEC=0|1] (P: 0..1)
+# Checked before anything is built: one line and status 2 for a bad value.
+ifneq ($(filter net-soak,$(MAKECMDGOALS)),)
+$(call check_whole_number,make net-soak,BOARDS,1,4,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,HOSTS,0,8,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,MESSAGES,1,10000,$(NET_SOAK_USAGE))
+$(call check_whole_number,make net-soak,SEED,0,4294967295,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,LOSS,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,CORRUPT,$(NET_SOAK_USAGE))
+$(call check_fraction,make net-soak,BYTE_ERRORS,$(NET_SOAK_USAGE))
+ifneq ($(filter-out 0 1 on off yes no,$(FEC))$(filter-out 1,$(words $(FEC))),)
+$(error make net-soak: FEC='$(FEC)': use FEC=1 (Reed-Solomon frames) or FEC=0 (usage: $(NET_SOAK_USAGE)))
+endif
+ifeq ($(shell [ $$(( $(BOARDS) + $(HOSTS) )) -ge 2 ] && echo ok),)
+$(error make net-soak: BOARDS=$(BOARDS) HOSTS=$(HOSTS): at least 2 stations are needed (usage: $(NET_SOAK_USAGE)))
+endif
+endif
 net-soak:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory firmware APP=netnode
@@ -296,20 +313,20 @@ APP_LIB_LINK += $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a
 NET_AUTH_MBEDTLS_HOST := $(patsubst %,$(NET_BUILD)/auth/mbedtls/%.o,$(NET_AUTH_MBEDTLS_NAMES))
 $(NET_BUILD)/auth/mbedtls/%.o: $(NET_AUTH_MBEDTLS)/library/%.c net/auth_mbedtls_config.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(filter-out -W% -O%,$(HOST_CFLAGS)) -O2 -w $(NET_SANITIZE) $(NET_AUTH_CONFIG) \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(filter-out -W% -O%,$(HOST_CFLAGS)) -O2 -w $(NET_SANITIZE) $(NET_AUTH_CONFIG) \
 	    -I$(NET_AUTH_MBEDTLS)/library -c -o $@ $<
 NET_AUTH_TEST   := $(NET_BUILD)/tests/test_auth
 NET_AUTH_SAMPLE := $(NET_BUILD)/tests/auth_sample
 $(NET_AUTH_TEST): net/tests/test_auth.c net/tests/rfc4493.h net/auth.c net/auth.h net/auth_mbedtls_config.h \
                   $(NET_AUTH_MBEDTLS_HOST)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/test_auth.c net/auth.c \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/test_auth.c net/auth.c \
 	    $(NET_AUTH_MBEDTLS_HOST) -lcmocka
 # The tool the Python comparison (net/tests/auth/test_auth_python.py) drives.
 $(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/tests/sample_hex.h net/auth.c net/auth.h net/auth_mbedtls_config.h \
                     $(NET_AUTH_MBEDTLS_HOST)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/auth_sample.c net/auth.c \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) $(NET_AUTH_CONFIG) -o $@ net/tests/auth_sample.c net/auth.c \
 	    $(NET_AUTH_MBEDTLS_HOST)
 
 # The board image: net/auth.c and the CPU32 Mbed TLS on the firmware base
@@ -320,17 +337,17 @@ NET_AUTH_BOARD_ELF := $(NET_AUTH_BOARD_DIR)/auth_board.elf
 NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) $(NET_AUTH_CONFIG)
 $(NET_AUTH_BOARD_DIR)/%.o: net/%.c net/auth.h net/auth_mbedtls_config.h
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
 $(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/tests/rfc4493.h net/auth.h
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
 $(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
                        $(FW_BASE_OBJS) $(FW_LDSCRIPT) $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a \
                        $(CPU32_RT)
-	$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) \
+	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) \
 	    $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
 	    $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a $(CPU32_RT)
-	$(CROSS_SIZE) $@
+	$(if $(filter 1,$(V)),$(CROSS_SIZE) $@,@true)
 
 CHECKS += net-auth net-auth-target
 HOST_UNIT_CHECKS += net-auth

@@ -76,7 +76,10 @@
 #define PDL_ERR_NOT_FINITE        (-18)  /* NaN or infinity added to an integer quantity */
 
 /* ---- quantities ---- */
-enum pdl_kind { PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR };
+enum pdl_kind {
+    PDL_KIND_NONE = 0, PDL_KIND_INT, PDL_KIND_FLOAT, PDL_KIND_SENSOR,
+    PDL_KIND_INT8, PDL_KIND_INT16, PDL_KIND_UINT8, PDL_KIND_UINT16
+};
 
 /* Bookkeeping shared by every kind (first member of each quantity). */
 struct pdl_head {
@@ -94,6 +97,23 @@ struct pdl_quantity {
     int32_t min, max;
     int64_t sum;        /* this cycle's contributions */
 };
+
+/* Narrow integer quantities (the paper's "all native numerical datatypes
+ * of C"): value(q) has the quantity's own type, and the semantics are
+ * those of struct pdl_quantity: contributions summed exactly (64 bits,
+ * saturating), the result clipped to [min, max] (which lie within the
+ * type) at the end of the cycle. Actuators bind only int32 quantities. */
+#define PDL_NARROW_QUANTITY_(name, type) \
+    struct name {                        \
+        struct pdl_head head;            \
+        type cur;                        \
+        type min, max;                   \
+        int64_t sum;                     \
+    }
+PDL_NARROW_QUANTITY_(pdl_quantity_int8, int8_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_int16, int16_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_uint8, uint8_t);
+PDL_NARROW_QUANTITY_(pdl_quantity_uint16, uint16_t);
 
 /* Float quantity (soft-float on the CPU32: about ten times the cost).
  * Float addition is not associative: the committed value may differ in
@@ -117,6 +137,11 @@ struct pdl_sensor {
 /* Declares a quantity to the runtime (before run_pdl()). */
 int add_quantity(struct pdl_quantity *q, int32_t min, int32_t max, int32_t initial);
 int add_fquantity(struct pdl_fquantity *q, float min, float max, float initial);
+int add_quantity_int8(struct pdl_quantity_int8 *q, int8_t min, int8_t max, int8_t initial);
+int add_quantity_int16(struct pdl_quantity_int16 *q, int16_t min, int16_t max, int16_t initial);
+int add_quantity_uint8(struct pdl_quantity_uint8 *q, uint8_t min, uint8_t max, uint8_t initial);
+int add_quantity_uint16(struct pdl_quantity_uint16 *q, uint16_t min, uint16_t max,
+                        uint16_t initial);
 int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max);
 
 /* value(q): the value of q from the previous cycle (an rvalue). */
@@ -259,9 +284,28 @@ static inline int pdl_add_ldouble_(int64_t *sum, long double v)
 typedef void (*pdl_process_fn)(void);
 
 /* Registers a process: runs every cycle (pv 0), or every 2^pv cycles.
- * Returns the process id (0, 1, ...) or an error. */
+ * Returns the process id (0, 1, ...) or an error. The macros keep the
+ * function's name as written (pdl_process_name: what a runner shows). */
 int add_process(pdl_process_fn f);
 int add_process_pv(pdl_process_fn f, int pv);
+int pdl_add_process_named(pdl_process_fn f, int pv, const char *name, const char *call);
+#define add_process(f) pdl_add_process_named((f), 0, #f, "add_process")
+#define add_process_pv(f, pv) pdl_add_process_named((f), (pv), #f, "add_process_pv")
+
+/* The processes as a runner outside the program sees them: how many, each
+ * one's name and how often it ran since run_pdl(). One table, in memory, so
+ * that the arena (emu/world) can read it from the emulated board too
+ * (pdl_process_table: count, runs[], then names[] as pointers). */
+struct pdl_process_table {
+    uint32_t count;
+    uint32_t runs[PDL_MAX_PROCESSES];
+    const char *names[PDL_MAX_PROCESSES];
+};
+extern struct pdl_process_table pdl_process_table;
+int pdl_process_count(void);
+/* "" for an id that is not a process. */
+const char *pdl_process_name(int id);
+uint32_t pdl_process_runs(int id);
 
 /* ---- time ---- */
 /* Time from the start of the previous cycle to the start of this one (the
@@ -297,6 +341,15 @@ int run_pdl(void);
 int pdl_stop(uint32_t timeout_ms);
 /* Forgets every process, quantity and binding (not while the cycle thread runs). */
 int pdl_reset(void);
+
+/* For main after run_pdl(): waits ms milliseconds of the program's time
+ * while the cycles run (board: the kernel clock; host: the simulated clock,
+ * the cycles in between run first), and the time since the start (board:
+ * since boot; host: the start of the current cycle). A program that keeps to
+ * pdl.h, these and the C library runs unchanged on the board and on the
+ * host (make run APP=x HOST=1). */
+int pdl_sleep_ms(uint32_t ms);
+uint32_t pdl_uptime_ms(void);
 
 struct pdl_stats {
     uint32_t cycles;            /* cycles completed */

@@ -37,20 +37,20 @@ PDL_HOST_LIB := $(PDL_BUILD)/libpdl_host.a
 pdl-host-lib: $(PDL_HOST_LIB)
 $(PDL_HOST_LIB): $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(PDL_BUILD)/host-obj
-	cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
-	rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
+	$(call quiet,HOSTCC,$@ objects)cd $(PDL_BUILD)/host-obj && $(HOST_CC) $(PDL_HOST_CFLAGS) -c $(addprefix $(ROOT)/,$(PDL_HOST_SRCS))
+	$(call quiet,AR,$@)rm -f $@ && ar rcs $@ $(addprefix $(PDL_BUILD)/host-obj/,$(notdir $(PDL_HOST_SRCS:.c=.o)))
 
 $(PDL_BUILD)/tests/test_pdl: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
 
 $(PDL_BUILD)/tests/test_pdl_sanitized: pdl/tests/test_pdl.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) $(PDL_SANITIZE) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) $(PDL_SANITIZE) -o $@ $< $(PDL_HOST_SRCS) -lcmocka
 
 $(PDL_BUILD)/tests/test_behaviours: pdl/tests/test_behaviours.c $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_EXAMPLE_SRCS) $(PDL_HOST_SRCS) -lcmocka
 
 # pdl/README.md's complete example ("A complete program"), extracted and run.
 PDL_README_TEST := $(PDL_BUILD)/tests/readme_example
@@ -61,7 +61,7 @@ $(PDL_BUILD)/readme_example.c: pdl/README.md
 	@test -s $@ || { echo "no C example under 'A complete program' in pdl/README.md"; exit 1; }
 $(PDL_README_TEST): pdl/tests/readme_main.c $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -o $@ $< $(PDL_BUILD)/readme_example.c $(PDL_HOST_SRCS)
 ALL += $(PDL_README_TEST)
 
 # Misuse the compiler must refuse: each pdl/tests/refuse/*.c has to fail to
@@ -92,13 +92,13 @@ check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 
 # ---- on the emulated board ----
 CHECKS += pdl-target
-PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench)
+PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench) $(call app_elf,pdl_types)
 
 .PHONY: check-pdl-target pdl-bench
 check-pdl-target:
 	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS)
-	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) ci/pytest-suite pdl-target pdl/tests/target
+	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS) $(PDL_TYPES_HOST)
+	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) PDL_TYPES_HOST=$(PDL_TYPES_HOST) ci/pytest-suite pdl-target pdl/tests/target
 
 # Every figure of pdl/README.md "Speed", printed and kept in build/pdl/bench.txt.
 pdl-bench:
@@ -107,3 +107,10 @@ pdl-bench:
 	@mkdir -p $(PDL_BUILD)
 	@BSCHED_QEMU=$(QEMU_M68K) $(PYTHON) pdl/tests/target/pdl_measure.py \
 	    $(call app_elf,pdl_bench) $(QEMU_M68K) | tee $(PDL_BUILD)/bench.txt
+
+# apps/pdl_types on the host runtime (its own main: pdl_sleep_ms runs the
+# cycles), to compare with the board's output line for line.
+PDL_TYPES_HOST := $(PDL_BUILD)/pdl_types_host
+$(PDL_TYPES_HOST): apps/pdl_types/main.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -DPDL_HOST=1 -o $@ $< $(PDL_HOST_SRCS)

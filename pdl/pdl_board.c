@@ -315,3 +315,10 @@ uint32_t pdl_stack_used(void)
 uint32_t pdl_stack_size(void) { return sizeof pdl_stack; }
 
 struct k_thread *pdl_cycle_thread(void) { return &pdl_thread.thread; }
+
+int pdl_sleep_ms(uint32_t ms)
+{
+    return k_sleep_ticks(k_ms_to_ticks(ms)) == K_OK ? PDL_OK : PDL_ERR_KERNEL;
+}
+
+uint32_t pdl_uptime_ms(void) { return k_uptime_ms(); }

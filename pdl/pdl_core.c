@@ -37,7 +37,8 @@ static uint16_t pdl_nquantities;
  * commit loops need no dispatch). */
 static struct pdl_quantity *pdl_pending_int[PDL_MAX_QUANTITIES];
 static struct pdl_fquantity *pdl_pending_float[PDL_MAX_QUANTITIES];
-static uint32_t pdl_npending_int, pdl_npending_float;
+static struct pdl_head *pdl_pending_narrow[PDL_MAX_QUANTITIES];
+static uint32_t pdl_npending_int, pdl_npending_float, pdl_npending_narrow;
 
 /* The plan of one major cycle, recorded from bsched_step at run_pdl(): for
  * minor cycle t, the processes pdl_plan_runs[pdl_plan_start[t] ..
@@ -136,6 +137,44 @@ int add_quantity(struct pdl_quantity *q, int32_t min, int32_t max, int32_t initi
     return PDL_OK;
 }
 
+/* add_quantity_int8 & co.: the bounds are checked as int32 (every narrow
+ * type fits). */
+#define PDL_ADD_NARROW_(fn, qtype, type, kind)                              \
+    int fn(struct qtype *q, type min, type max, type initial)               \
+    {                                                                       \
+        int r = pdl_declare(q == NULL ? NULL : &q->head, #fn);              \
+        if (r != PDL_OK)                                                    \
+            return r;                                                       \
+        if (min > max || initial < min || initial > max)                    \
+            return pdl_refuse(PDL_ERR_BOUNDS, #fn);                         \
+        q->min = min;                                                       \
+        q->max = max;                                                       \
+        q->cur = initial;                                                   \
+        q->sum = 0;                                                         \
+        pdl_register(&q->head, kind);                                       \
+        return PDL_OK;                                                      \
+    }
+PDL_ADD_NARROW_(add_quantity_int8, pdl_quantity_int8, int8_t, PDL_KIND_INT8)
+PDL_ADD_NARROW_(add_quantity_int16, pdl_quantity_int16, int16_t, PDL_KIND_INT16)
+PDL_ADD_NARROW_(add_quantity_uint8, pdl_quantity_uint8, uint8_t, PDL_KIND_UINT8)
+PDL_ADD_NARROW_(add_quantity_uint16, pdl_quantity_uint16, uint16_t, PDL_KIND_UINT16)
+
+static int pdl_kind_narrow(uint8_t kind)
+{
+    return kind >= PDL_KIND_INT8 && kind <= PDL_KIND_UINT16;
+}
+
+/* The sum of a narrow quantity (its offset differs with the type). */
+static int64_t *pdl_narrow_sum(struct pdl_head *h)
+{
+    switch (h->kind) {
+    case PDL_KIND_INT8: return &((struct pdl_quantity_int8 *)(void *)h)->sum;
+    case PDL_KIND_INT16: return &((struct pdl_quantity_int16 *)(void *)h)->sum;
+    case PDL_KIND_UINT8: return &((struct pdl_quantity_uint8 *)(void *)h)->sum;
+    default: return &((struct pdl_quantity_uint16 *)(void *)h)->sum;
+    }
+}
+
 int add_fquantity(struct pdl_fquantity *q, float min, float max, float initial)
 {
     int r = pdl_declare(q == NULL ? NULL : &q->head, "add_fquantity");
@@ -166,7 +205,9 @@ int add_sensor(struct pdl_sensor *q, int32_t min, int32_t max)
     return PDL_OK;
 }
 
-static int pdl_add(pdl_process_fn f, int pv, const char *fn)
+struct pdl_process_table pdl_process_table;
+
+int pdl_add_process_named(pdl_process_fn f, int pv, const char *name, const char *fn)
 {
     if (f == NULL)
         return pdl_refuse(PDL_ERR_NULL, fn);
@@ -178,11 +219,30 @@ static int pdl_add(pdl_process_fn f, int pv, const char *fn)
         return pdl_refuse(PDL_ERR_TOO_MANY_PROCESSES, fn);
     pdl_procs[pdl_nprocs] = f;
     pdl_pv[pdl_nprocs] = (uint8_t)pv;
+    pdl_process_table.names[pdl_nprocs] = name != NULL ? name : "";
+    pdl_process_table.runs[pdl_nprocs] = 0;
+    pdl_process_table.count = (uint32_t)pdl_nprocs + 1u;
     return pdl_nprocs++;
 }
 
-int add_process(pdl_process_fn f) { return pdl_add(f, 0, "add_process"); }
-int add_process_pv(pdl_process_fn f, int pv) { return pdl_add(f, pv, "add_process_pv"); }
+/* The functions behind the macros (a program that takes their address). */
+int (add_process)(pdl_process_fn f) { return pdl_add_process_named(f, 0, "", "add_process"); }
+int (add_process_pv)(pdl_process_fn f, int pv)
+{
+    return pdl_add_process_named(f, pv, "", "add_process_pv");
+}
+
+int pdl_process_count(void) { return (int)pdl_process_table.count; }
+
+const char *pdl_process_name(int id)
+{
+    return id >= 0 && (uint32_t)id < pdl_process_table.count ? pdl_process_table.names[id] : "";
+}
+
+uint32_t pdl_process_runs(int id)
+{
+    return id >= 0 && (uint32_t)id < pdl_process_table.count ? pdl_process_table.runs[id] : 0u;
+}
 
 /* Records one major cycle of the planned set (see pdl_plan_runs). Steps
  * pdl_sched through exactly 2^maxpv minor cycles, after which its state is
@@ -269,13 +329,18 @@ static void __attribute__((noinline)) pdl_pend_other(struct pdl_head *h)
          * that a refused call leaves the quantity as it was */
         if (h->kind == PDL_KIND_INT)
             ((struct pdl_quantity *)(void *)h)->sum = 0;
-        else
+        else if (pdl_kind_narrow(h->kind))
+            *pdl_narrow_sum(h) = 0;
+        else if (h->kind == PDL_KIND_FLOAT)
             ((struct pdl_fquantity *)(void *)h)->sum = 0.0f;
         (void)pdl_refuse(PDL_ERR_OUTSIDE_PROCESS, "add_value");
         return;
     }
     if (h->kind == PDL_KIND_FLOAT) {
         pdl_pending_float[pdl_npending_float++] = (struct pdl_fquantity *)(void *)h;
+        h->pending = 1;
+    } else if (pdl_kind_narrow(h->kind)) {
+        pdl_pending_narrow[pdl_npending_narrow++] = h;
         h->pending = 1;
     } else {    /* a sensor cast to a quantity: never committed */
         (void)pdl_refuse(PDL_ERR_UNDECLARED, "add_value (not a writable quantity)");
@@ -331,6 +396,7 @@ static void pdl_core_run_process(void *context, uint16_t index)
     pdl_procs[index]();
     pdl_current = -1;
     pdl_last_run_us[index] = pdl_cycle_start_us;
+    pdl_process_table.runs[index]++;
 }
 
 int32_t pdl_cycle_run(void)
@@ -352,6 +418,7 @@ int32_t pdl_cycle_run(void)
             pdl_current = index;
             pdl_procs[index]();
             pdl_last_run_us[index] = pdl_cycle_start_us;
+            pdl_process_table.runs[index]++;
         }
         pdl_current = -1;
     }
@@ -404,10 +471,53 @@ static void pdl_commit_float(struct pdl_fquantity *q)
     q->cur = v;
 }
 
+/* A narrow quantity: cur + sum clipped to [min, max], in 64 bits (the sum
+ * saturates at the int64 limits, and |cur| < 2^16, so cur + sum cannot
+ * overflow but at those limits, which are compared first). */
+static int32_t pdl_clip64(int32_t cur, int64_t sum, int32_t min, int32_t max)
+{
+    if (sum > (int64_t)max - cur)
+        return max;
+    if (sum < (int64_t)min - cur)
+        return min;
+    return (int32_t)(cur + sum);
+}
+
+#define PDL_COMMIT_NARROW_(qtype, type, h)                                   \
+    do {                                                                     \
+        struct qtype *n_ = (struct qtype *)(void *)(h);                      \
+        n_->cur = (type)pdl_clip64(n_->cur, n_->sum, n_->min, n_->max);      \
+        n_->sum = 0;                                                         \
+    } while (0)
+
+static void pdl_commit_narrow(struct pdl_head *h)
+{
+    switch (h->kind) {
+    case PDL_KIND_INT8: PDL_COMMIT_NARROW_(pdl_quantity_int8, int8_t, h); break;
+    case PDL_KIND_INT16: PDL_COMMIT_NARROW_(pdl_quantity_int16, int16_t, h); break;
+    case PDL_KIND_UINT8: PDL_COMMIT_NARROW_(pdl_quantity_uint8, uint8_t, h); break;
+    default: PDL_COMMIT_NARROW_(pdl_quantity_uint16, uint16_t, h); break;
+    }
+}
+
+/* Out of the usual path: a cycle without narrow quantities pays one test. */
+static void __attribute__((noinline)) pdl_commit_narrow_all(void)
+{
+    uint32_t k;
+    pdl_stats.commits += pdl_npending_narrow;
+    for (k = 0; k < pdl_npending_narrow; k++) {
+        pdl_pending_narrow[k]->pending = 0;
+        pdl_commit_narrow(pdl_pending_narrow[k]);
+    }
+    pdl_npending_narrow = 0;
+}
+
 static void pdl_commit(void)
 {
     struct pdl_quantity **p = pdl_pending_int, **end = p + pdl_npending_int;
     struct pdl_fquantity **f = pdl_pending_float, **fend = f + pdl_npending_float;
+    if (pdl_npending_narrow != 0u)
+        pdl_commit_narrow_all();
     pdl_stats.commits += pdl_npending_int + pdl_npending_float;
     pdl_npending_int = 0;
     pdl_npending_float = 0;
@@ -463,7 +573,9 @@ void pdl_core_reset(void)
     pdl_nquantities = 0;
     pdl_npending_int = 0;
     pdl_npending_float = 0;
+    pdl_npending_narrow = 0;
     pdl_nprocs = 0;
+    pdl_process_table.count = 0;
     pdl_started = 0;
     pdl_current = -1;
     pdl_cycle_count_begun = 0;

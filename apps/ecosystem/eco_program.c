@@ -7,6 +7,7 @@
  * them is irrelevant. Process-private state lives in statics.
  */
 #include "eco_program.h"
+#include "pdl/robot.h"
 
 struct pdl_sensor light_l, light_r, ir_l, ir_r, battery, comp_l, comp_r;
 struct pdl_sensor bump_l, bump_r, charger;
@@ -246,14 +247,15 @@ int eco_setup(uint32_t seed, int bind)
         [ECO_PHOTO] = photo, [ECO_DOCK] = dock, [ECO_WANDER] = wander,
         [ECO_COMPETE] = compete, [ECO_BATTERY] = battery_monitor, [ECO_MOTORS] = motors,
     };
+    /* The arena robot's wiring (pdl/robot.h). */
     const struct pdl_binding wiring[] = {
-        {&light_l.head, PDL_ANALOG_IN, 0}, {&light_r.head, PDL_ANALOG_IN, 1},
-        {&ir_l.head, PDL_ANALOG_IN, 2},    {&ir_r.head, PDL_ANALOG_IN, 3},
-        {&battery.head, PDL_ANALOG_IN, 4},
-        {&comp_l.head, PDL_ANALOG_IN, 5},  {&comp_r.head, PDL_ANALOG_IN, 6},
-        {&bump_l.head, PDL_BINARY_IN, 1},  {&bump_r.head, PDL_BINARY_IN, 2},
-        {&charger.head, PDL_BINARY_IN, 3},
-        {&motor_l.head, PDL_MOTOR, 0},     {&motor_r.head, PDL_MOTOR, 1},
+        {&light_l.head, ROBOT_LIGHT_LEFT}, {&light_r.head, ROBOT_LIGHT_RIGHT},
+        {&ir_l.head, ROBOT_IR_LEFT},       {&ir_r.head, ROBOT_IR_RIGHT},
+        {&battery.head, ROBOT_BATTERY},
+        {&comp_l.head, ROBOT_COMP_LEFT},   {&comp_r.head, ROBOT_COMP_RIGHT},
+        {&bump_l.head, ROBOT_BUMPER_LEFT}, {&bump_r.head, ROBOT_BUMPER_RIGHT},
+        {&charger.head, ROBOT_CHARGING},
+        {&motor_l.head, ROBOT_MOTOR_LEFT}, {&motor_r.head, ROBOT_MOTOR_RIGHT},
     };
     struct pdl_sensor *analog[] = {&light_l, &light_r, &ir_l, &ir_r, &battery, &comp_l, &comp_r};
     struct pdl_sensor *binary[] = {&bump_l, &bump_r, &charger};
@@ -292,7 +294,7 @@ int eco_setup(uint32_t seed, int bind)
         r = pdl_bind_table(wiring, sizeof wiring / sizeof wiring[0]);
     }
     for (i = 0; r >= 0 && i < ECO_PROCS; i++) {
-        r = add_process_pv(body[i], eco_pv[i]);
+        r = pdl_add_process_named(body[i], eco_pv[i], eco_names[i], "add_process_pv");
     }
     return r < 0 ? r : PDL_OK;
 }

@@ -10,7 +10,7 @@
  * the host (emu/world/host/eco_host.c: the PDL host runtime), against the
  * same world.
  *
- * Wiring (as the world's arena file wires the robot):
+ * Wiring (the arena robot's, pdl/robot.h):
  *   light_l/r  analog in 0/1   station light, left/right (+-40 deg)
  *   ir_l/r     analog in 2/3   infrared distance, larger = nearer
  *   battery    analog in 4     battery voltage, 10 V full scale

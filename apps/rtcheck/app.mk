@@ -9,7 +9,7 @@ rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt
 RTCHECK_HOST := $(BUILD)/tests/rtcheck_host
 $(RTCHECK_HOST): apps/rtcheck/tests/host_main.c $(wildcard apps/rtcheck/rt_*.[ch])
 	@mkdir -p $(@D)
-	$(HOST_CC) -std=c99 -O2 -Wall -Wextra -Werror -Iapps/rtcheck -o $@ apps/rtcheck/tests/host_main.c \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) -std=c99 -O2 -Wall -Wextra -Werror -Iapps/rtcheck -o $@ apps/rtcheck/tests/host_main.c \
 	    apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c -lm
 
 CHECKS += rtcheck

@@ -21,18 +21,18 @@ BENCH_FW_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=% -MMD -MP,$(FW_CFLAGS)) -DBSCH
 
 $(BENCH_DIR)/bsched-bench: bsched/bench/bench_host.c $(BENCH_LIB) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
 	    bsched/bench/bench_host.c $(BENCH_LIB)
 
 $(BENCH_DIR)/cpu32/%.c.o: %.c $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(BENCH_FW_FLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(BENCH_FW_FLAGS) -c -o $@ $<
 $(BENCH_DIR)/cpu32/%.S.o: %.S
 	@mkdir -p $(@D)
-	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
 
 $(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) kernel/arch/cpu32/robocube.ld $(CPU32_RT)
-	$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(BENCH_FW_OBJS) $(CPU32_RT)
+	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(BENCH_FW_OBJS) $(CPU32_RT)
 
 .PHONY: bench
 bench:

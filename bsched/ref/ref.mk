@@ -9,7 +9,7 @@ HOST_UNIT_CHECKS += bsched-fig7
 $(BUILD)/tests/test_bsched_fig7: bsched/ref/tests/test_bsched_fig7.c bsched/tests/table2.h bsched/ref/bsched_fig7.c \
         bsched/ref/bsched_fig7.h bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=1024 -o $@ \
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=1024 -o $@ \
 	    bsched/ref/tests/test_bsched_fig7.c bsched/ref/bsched_fig7.c bsched/bsched.c -lcmocka
 
 .PHONY: check-bsched-fig7

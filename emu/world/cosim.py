@@ -12,7 +12,10 @@ shift=8,sleep=off), so the same firmware, arena and seed give the same run
 bit for bit, whatever the load on the host.
 """
 
+import os
 import re
+import struct
+import subprocess
 
 from robocube_emu.lockstep import LOCKSTEP, Emulator
 from robocube_emu.qmp import qom_set
@@ -40,6 +43,14 @@ def sensor_inputs(codes, wiring):
     """The program's inputs in eco_host_cycle order (flags 1 = active)."""
     return [codes[k] for k in ANALOG] + [1 - codes["bumper_left"], 1 - codes["bumper_right"],
                                          1 - codes["charging"]]
+
+
+def analog_inputs(codes, wiring):
+    """The board's 24 analog inputs as the world sets them (unwired: 0)."""
+    ain = [0] * 24
+    for k in ANALOG:
+        ain[wiring["ain_" + k]] = codes[k]
+    return ain
 
 
 def input_port(codes, wiring):
@@ -70,10 +81,58 @@ def parse_status(line, names):
             "contrib": {n: (int(a), int(b)) for n, (a, b) in zip(names, pairs)}}
 
 
+PROCESS_TABLE = "pdl_process_table"
+PDL_MAX_PROCESSES = 32
+
+
+class BoardProcessRuns:
+    """The PDL program's processes and how often each ran, read from the
+    board's memory (pdl_process_table, pdl/pdl.h: count, runs[32], names[32],
+    big-endian 32-bit words) with QMP memsave while the machine stands at a
+    lockstep boundary. None when the image has no PDL runtime."""
+
+    SIZE = 4 + 8 * PDL_MAX_PROCESSES
+
+    @classmethod
+    def open(cls, emu, elf, nm="m68k-linux-gnu-nm"):
+        try:
+            out = subprocess.run([nm, elf], capture_output=True, text=True, timeout=30).stdout
+        except (OSError, subprocess.SubprocessError):
+            return None
+        for line in out.splitlines():
+            words = line.split()
+            if len(words) == 3 and words[2] == PROCESS_TABLE:
+                return cls(emu, int(words[0], 16))
+        return None
+
+    def __init__(self, emu, address):
+        self.emu, self.address, self.names = emu, address, {}
+        self.path = os.path.join(emu.dir, "mem")
+
+    def _mem(self, address, size):
+        self.emu.qmp.execute("memsave", {"val": address, "size": size, "filename": self.path})
+        with open(self.path, "rb") as f:
+            return f.read()
+
+    def read(self):
+        words = struct.unpack(f">{1 + 2 * PDL_MAX_PROCESSES}I", self._mem(self.address, self.SIZE))
+        n = min(words[0], PDL_MAX_PROCESSES)
+        runs = {}
+        for i in range(n):
+            ptr = words[1 + PDL_MAX_PROCESSES + i]
+            if (i, ptr) not in self.names:
+                name = self._mem(ptr, 48).split(b"\0")[0].decode(errors="replace") if ptr else ""
+                self.names[(i, ptr)] = name or f"process{i}"
+            runs[self.names[(i, ptr)]] = words[1 + i]
+        return runs
+
+
 def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step=None,
-                 on_console=None):
+                 on_console=None, on_runs=None, runs_every_s=1.0):
     """Runs the lockstep loop for `seconds` of virtual time (or until the
-    battery is empty). names: the program's process names, in index order."""
+    battery is empty). names: the program's process names, in index order
+    (for the ecosystem's status line). on_runs gets the processes' run
+    counts every runs_every_s of virtual time and at the end."""
     wiring = world.arena["wiring"]
     ml, mr = wiring["motor_left"], wiring["motor_right"]
     sample = [f"{LOCKSTEP}:boundary-ns"]
@@ -86,7 +145,9 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step
                                  f"{IO}/motor{mr}:encoder"]
     wheels = [MotorModel(), MotorModel()]
     emu = Emulator(qemu, elf, step_ns)
+    runs_steps = max(1, int(round(runs_every_s * 1e9 / step_ns)))
     try:
+        reader = BoardProcessRuns.open(emu, elf) if on_runs else None
         q = emu.qmp
         q.batch([qom_set(f"{IO}/motor{ml}", "model-enabled", 0),
                  qom_set(f"{IO}/motor{mr}", "model-enabled", 0),
@@ -124,6 +185,8 @@ def run_emulated(world, rec, qemu, elf, names, seconds, step_ns=STEP_NS, on_step
                       for w, d, direction in ((wheels[0], duty_l, s[2]), (wheels[1], duty_r, s[4]))]
             world.step(dt_ns / 1e9, turned[0], turned[1], duty_l * abs(s[2]), duty_r * abs(s[4]))
             codes = world.sensors()
+            if reader and (k % runs_steps == 0 or prev_ns + step_ns > end_ns or not world.alive):
+                on_runs(reader.read())      # the machine stands at the boundary
             emu.send_inputs([codes[c] for c in ANALOG] +
                             [input_port(codes, wiring), wheels[0].encoder, wheels[1].encoder])
             for line in emu.read_console():

@@ -20,6 +20,7 @@ class Recorder:
         self.last_status = {}       # the robot program's latest report
         self.overruns = 0
         self.status_lines = 0
+        self.runs = {}              # each process's runs so far (the program's counts)
 
     def step(self, t_ns):
         w = self.world
@@ -56,14 +57,16 @@ class Recorder:
             "competitor_hits": w.competitor_hits,
             "final_charge": round(w.soc, 4),
             "overruns": self.overruns,
+            "process_runs": dict(self.runs),
             "trajectory_sha256": self.digest(),
         }
 
 
-def summary_lines(s, mode):
+def summary_lines(s, mode, program="ecosystem"):
     c = s["collisions"]
+    runs = " ".join(f"{name} {n}" for name, n in s.get("process_runs", {}).items()) or "-"
     return [
-        f"ecosystem ({mode}): {s['virtual_s']:.1f} s of virtual time",
+        f"{program} ({mode}): {s['virtual_s']:.1f} s of virtual time",
         f"  survived:        {s['survived_s']:.1f} s ({'alive' if s['alive'] else 'battery empty'}),"
         f" final charge {100 * s['final_charge']:.0f} %",
         f"  recharges:       {s['recharges']}",
@@ -72,6 +75,7 @@ def summary_lines(s, mode):
         f"  distance:        {s['distance_m']:.1f} m",
         f"  competitor hits: {s['competitor_hits']}",
         f"  overruns:        {s['overruns']}",
+        f"  process runs:    {runs}",
     ]
 
 

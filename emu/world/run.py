@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""make run: the ecosystem. The robot program runs on the emulated RoboCube
-(real firmware, QEMU in lockstep with the world) or, with --host, on the host
-against the same world (fast mode). Shows a live view (a terminal) or
-progress lines (a pipe), then a summary, the picture and the trajectory's
-sha256. Exit status 0 after a complete run (whatever the robot did), 2 on
-bad input, 1 when the emulator or the program failed."""
+"""make run in an arena: a robot program (the ecosystem's, or any PDL program:
+make run APP=x WORLD=default) runs on the emulated RoboCube (real firmware,
+QEMU in lockstep with the world) or, with --host, on the host against the
+same world (fast mode). Shows a live view (a terminal) or progress lines (a
+pipe), the robot's console lines as they come, then a summary, the picture
+and the trajectory's sha256. Exit status 0 after a complete run (whatever the
+robot did), 2 on bad input, 1 when the emulator or the program failed."""
 
 import argparse
 import json
@@ -75,7 +76,8 @@ def parse_args(argv):
     ap.add_argument("--host", action="store_true", help="fast mode: the program on the host")
     ap.add_argument("--elf", help="firmware image (emulated mode)")
     ap.add_argument("--qemu", default=os.environ.get("BSCHED_QEMU"), help="qemu-system-m68k")
-    ap.add_argument("--host-lib", help="libeco_host.so (fast mode)")
+    ap.add_argument("--host-lib", help="the program as a host library (fast mode): "
+                    "libeco_host.so or a PDL program's libNAME_host.so")
     ap.add_argument("--step-ms", type=_step_ms, default=STEP_MS,
                     help=f"lockstep step (default {STEP_MS} ms: one kernel tick, see cosim.py)")
     ap.add_argument("--out", default="build/run", help="folder for ecosystem.png and summary.json")
@@ -89,7 +91,30 @@ def parse_args(argv):
     for path in (a.elf, a.qemu, a.host_lib):
         if path and not os.path.exists(path):
             ap.error(f"{path}: no such file")
+    if a.host:
+        import ctypes
+        try:
+            ctypes.CDLL(os.path.abspath(a.host_lib))
+        except OSError as e:
+            ap.error(f"--host-lib {a.host_lib}: not a loadable library ({e})")
     return a
+
+
+# The ecosystem firmware's processes, in id order, for its status line
+# (apps/ecosystem/eco_program.h).
+ECO_PROCESSES = ["bump", "avoid", "cruise", "photo", "dock", "wander", "compete", "battery",
+                 "motors"]
+
+
+def program_name(a):
+    """The program's name from its image (NAME.elf) or host library (libNAME_host.so)."""
+    base = os.path.basename(a.host_lib if a.host else a.elf)
+    if base == "libeco_host.so":
+        return "ecosystem"
+    for prefix, suffix in (("lib", "_host.so"), ("", ".elf")):
+        if base.startswith(prefix) and base.endswith(suffix):
+            return base[len(prefix):len(base) - len(suffix)]
+    return base
 
 
 def main(argv=None):
@@ -108,34 +133,45 @@ def main(argv=None):
         return 2
     rec = Recorder(world, trace=trace)
     mode = "host fast mode" if a.host else "emulated RoboCube, lockstep"
+    program = program_name(a)
     view = a.view
     if view == "auto":
         view = "live" if sys.stdout.isatty() else "plain"
-    title = f"ecosystem: {os.path.basename(a.arena)}, seed {a.seed}, {mode}"
+    title = f"{program}: {os.path.basename(a.arena)}, seed {a.seed}, {mode}"
     print(f"{title}: {a.seconds:g} s of virtual time", flush=True)
     shown = {"live": lambda: LiveView(title), "plain": PlainProgress,
              "none": None}[view]
     shown = shown() if shown else None
-    console_lines = []
     wall0 = time.monotonic()
+    first_line = []
+
+    def on_console(line):
+        """The robot's console, live: above the live view, or between the progress lines."""
+        if not first_line:
+            first_line.append(time.monotonic() - wall0)
+        text = f"robot: {line}"
+        if isinstance(shown, LiveView):
+            shown.console_line(text)
+        elif view != "none":
+            print(text, flush=True)
+
+    def on_runs(runs):
+        rec.runs = runs
+
     on_step = shown.update if shown else None
     try:
         if shown:
             shown.__enter__()
         if a.host:
             from hostmode import run_host
-            run_host(world, rec, a.host_lib, a.seed, a.seconds, a.step_ms / 1000.0, on_step)
+            run_host(world, rec, a.host_lib, a.seed, a.seconds, a.step_ms / 1000.0, on_step,
+                     on_console, on_runs)
             err = ""
         else:
             from cosim import run_emulated
-            from hostmode import HostProgram
-            names = None
-            if a.host_lib:
-                names = HostProgram(a.host_lib, 1).names
-            names = names or ["bump", "avoid", "cruise", "photo", "dock", "wander", "compete",
-                              "battery", "motors"]
+            names = ECO_PROCESSES
             err = run_emulated(world, rec, a.qemu, a.elf, names, a.seconds,
-                               int(round(a.step_ms * 1e6)), on_step, console_lines.append)
+                               int(round(a.step_ms * 1e6)), on_step, on_console, on_runs)
     except KeyboardInterrupt:
         print("run.py: interrupted", file=sys.stderr)
         return 1
@@ -151,14 +187,14 @@ def main(argv=None):
     if trace:
         trace.close()
     s = rec.summary()
-    s.update({"mode": "host" if a.host else "emulated", "seed": a.seed, "arena": a.arena,
-              "wall_s": round(wall, 2), "real_time_factor": round(world.t / wall, 2) if wall else None,
+    s.update({"program": program, "mode": "host" if a.host else "emulated", "seed": a.seed,
+              "arena": a.arena, "wall_s": round(wall, 2),
+              "real_time_factor": round(world.t / wall, 2) if wall else None,
+              "first_console_line_s": round(first_line[0], 2) if first_line else None,
               "program_status_lines": rec.status_lines})
     png = os.path.join(a.out, "ecosystem.png")
     with open(os.path.join(a.out, "summary.json"), "w") as f:
         json.dump(s, f, indent=1)
-    for line in console_lines[:20]:
-        print(f"robot console: {line}")
     # QEMU warns once that no virtual timer is armed: that is the machine
     # sitting paused (-S, and at each lockstep stop), not a problem.
     err = "\n".join(ln for ln in (err or "").splitlines()
@@ -166,7 +202,7 @@ def main(argv=None):
     if err.strip():
         print("emulator stderr:\n" + err.strip(), file=sys.stderr, flush=True)
     # The summary and the digest first: drawing is the last thing that can fail.
-    print("\n".join(summary_lines(s, mode)))
+    print("\n".join(summary_lines(s, mode, program)))
     print(f"  wall time:       {wall:.1f} s ({s['real_time_factor']}x real time)")
     print(f"trajectory sha256: {s['trajectory_sha256']}", flush=True)
     try:

@@ -47,13 +47,25 @@ def arena_text(world, trail, cols=56, rows=20):
     return "\n".join([border] + ["#" + "".join(row) + "#" for row in grid] + [border])
 
 
+def runs_delta(now, before):
+    """Each process's runs between two readings of the run counts."""
+    return {name: n - before.get(name, 0) for name, n in now.items()}
+
+
+def runs_text(runs):
+    return " ".join(f"{name}={n}" for name, n in runs.items()) or "-"
+
+
 class PlainProgress:
-    """One line every `every` virtual seconds."""
+    """One line every `every` virtual seconds: the world, the counts the
+    summary gives (recharges counted the same way), and how often each
+    process ran over the interval (from the program's run counts)."""
 
     def __init__(self, every=10.0, out=None):
         self.every = every
         self.out = out or (lambda line: print(line, flush=True))
         self.next = every
+        self.runs_before = {}
 
     def __enter__(self):
         return self
@@ -64,12 +76,13 @@ class PlainProgress:
     def update(self, world, rec):
         if world.t + 1e-9 >= self.next:
             self.next += self.every
-            st = rec.last_status
+            ran = runs_delta(rec.runs, self.runs_before)
+            self.runs_before = dict(rec.runs)
             self.out(f"t={world.t:6.1f}s pos=({world.x:4.2f},{world.y:4.2f}) "
                      f"battery={100 * world.soc:3.0f}%{' charging' if world.charging else ''} "
-                     f"recharges={world.recharges} hits={world.competitor_hits} "
+                     f"recharges={world.recharges_counted()} hits={world.competitor_hits} "
                      f"walls={world.collisions['wall']} overruns={rec.overruns} "
-                     f"ran={','.join(st.get('ran', [])) or '-'}")
+                     f"runs in last {self.every:g}s: {runs_text(ran)}")
 
 
 class LiveView:
@@ -85,6 +98,11 @@ class LiveView:
         self.last = 0.0
         self.trail = []
         self.wall_start = time.monotonic()
+        self.runs_before, self.runs_last_second = {}, {}
+
+    def console_line(self, line):
+        """A line of the robot's console, printed above the live view."""
+        self.console.print(line, markup=False, highlight=False)
 
     def __enter__(self):
         self.live.__enter__()
@@ -94,6 +112,9 @@ class LiveView:
         return self.live.__exit__(*exc)
 
     def update(self, world, rec, force=False):
+        if rec.runs != self.runs_before:       # a new reading (a final repeat changes nothing)
+            self.runs_last_second = runs_delta(rec.runs, self.runs_before)
+            self.runs_before = rec.runs
         if rec.n % 10 == 0:
             self.trail.append((world.x, world.y))
             self.trail = self.trail[-400:]
@@ -124,18 +145,25 @@ class LiveView:
         info.add_row("station", f"{world.station_available_w():.0f} W available")
         info.add_row("competitors", " ".join("on" if c.get("on", True) else "off"
                                              for c in world.competitors))
-        if st:
-            info.add_row("hunger", f"{st.get('hunger', 0) / 10:.0f} %")
+        # What the program reports: the ecosystem's status line has all of
+        # it, another program's host library the motors, a board image none.
+        if "hunger" in st:
+            info.add_row("hunger", f"{st['hunger'] / 10:.0f} %")
+        if "motor" in st:
             info.add_row("motors L/R", f"{st['motor'][0]:5d} {st['motor'][1]:5d} permille")
-            info.add_row("ran this cycle", " ".join(st.get("ran", [])) or "-")
-        else:
+        if "ran" in st:
+            info.add_row("ran this cycle", " ".join(st["ran"]) or "-")
+        if not st and not rec.runs:
             info.add_row("program", "no status from the robot yet")
+        info.add_row("runs (last second)", runs_text(self.runs_last_second))
         info.add_row("overruns", str(rec.overruns))
-        info.add_row("recharges", str(world.recharges))
+        info.add_row("recharges", str(world.recharges_counted()))
         info.add_row("collisions", f"walls {world.collisions['wall']}, obstacles "
                      f"{world.collisions['obstacle']}, competitors {world.collisions['competitor']}")
         info.add_row("competitor hits", str(world.competitor_hits))
         info.add_row("distance", f"{world.distance:.1f} m")
+        if not st.get("contrib"):
+            return Columns([arena, Panel(info, title="robot")])
         contrib = Table(title="behaviour contributions (last run)", show_edge=False)
         contrib.add_column("process")
         contrib.add_column("speed", justify="right")

@@ -294,6 +294,11 @@ class World:
             self.alive = False
             self.death_time = self.t
 
+    def recharges_counted(self):
+        """Recharges so far as the summary counts them: with a charging
+        session under way that has added 10 % already."""
+        return self.recharges + (1 if self._session_gain >= 0.10 else 0)
+
     def finish(self):
         """Counts a charging session still under way at the end of the run."""
         if self._session_gain >= 0.10:

@@ -19,6 +19,8 @@ static int32_t host_outputs[PDL_PORT_END][PDL_HOST_OUTPUTS];
 static uint32_t host_writes[PDL_PORT_END][PDL_HOST_OUTPUTS];
 static int host_fail[PDL_PORT_END][PDL_HOST_OUTPUTS];
 static uint32_t host_now_us;
+static uint64_t host_elapsed_us;        /* host_now_us without the wrap */
+static int (*host_sleep_hook)(uint32_t ms);
 static uint32_t host_cycle_us;          /* 0: the nominal period */
 static uint32_t host_cycles_run;
 static char host_message[160];
@@ -36,6 +38,7 @@ const char *pdl_last_message(void) { return host_message; }
 void pdl_host_echo_reports(int on) { host_echo = on; }
 
 int pdl_running(void) { return pdl_core_started(); }
+int pdl_host_started(void) { return pdl_core_started(); }
 
 void pdl_platform_read_inputs(struct pdl_inputs *in) { *in = host_inputs; }
 
@@ -83,8 +86,11 @@ int pdl_run_cycles(uint32_t n)
     if (!pdl_core_started())
         return pdl_refuse(PDL_ERR_NOT_RUNNING, "pdl_run_cycles");
     for (k = 0; k < n; k++) {
-        if (host_cycles_run > 0u)
-            host_now_us += host_cycle_us != 0u ? host_cycle_us : pdl_core_period_us;
+        if (host_cycles_run > 0u) {
+            uint32_t step = host_cycle_us != 0u ? host_cycle_us : pdl_core_period_us;
+            host_now_us += step;
+            host_elapsed_us += step;
+        }
         pdl_cycle_begin(host_now_us);
         (void)pdl_cycle_run();
         pdl_cycle_end();
@@ -120,6 +126,7 @@ int pdl_reset(void)
     memset(host_writes, 0, sizeof host_writes);
     memset(host_fail, 0, sizeof host_fail);
     host_now_us = 0;
+    host_elapsed_us = 0;
     host_cycle_us = 0;
     host_cycles_run = 0;
     host_message[0] = '\0';
@@ -174,4 +181,27 @@ void pdl_host_fail_output(enum pdl_port port, unsigned index, int code)
 {
     if (pdl_port_check(port, index, 1) == PDL_OK)
         host_fail[port][index] = code;
+}
+
+void pdl_host_set_sleep_hook(int (*hook)(uint32_t ms)) { host_sleep_hook = hook; }
+
+uint64_t pdl_host_elapsed_us(void) { return host_elapsed_us; }
+
+uint32_t pdl_uptime_ms(void) { return (uint32_t)(host_elapsed_us / 1000u); }
+
+/* Without a hook: runs the cycles that start within the next ms. */
+int pdl_sleep_ms(uint32_t ms)
+{
+    uint64_t until = host_elapsed_us + (uint64_t)ms * 1000u;
+    uint32_t step;
+    if (host_sleep_hook != NULL)
+        return host_sleep_hook(ms);
+    if (!pdl_core_started())
+        return pdl_refuse(PDL_ERR_NOT_RUNNING, "pdl_sleep_ms");
+    step = host_cycle_us != 0u ? host_cycle_us : pdl_core_period_us;
+    if (host_cycles_run == 0u)
+        (void)pdl_run_cycles(1);
+    while (host_elapsed_us + step <= until)
+        (void)pdl_run_cycles(1);
+    return PDL_OK;
 }

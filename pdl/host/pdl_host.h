@@ -40,4 +40,14 @@ const char *pdl_last_message(void);
 /* Reports go to stderr as well when non-zero (default 0: tests stay quiet). */
 void pdl_host_echo_reports(int on);
 
+/* Non-zero after run_pdl() (until pdl_stop or pdl_reset). */
+int pdl_host_started(void);
+/* Simulated time since pdl_reset (the start of the last cycle), 64 bits. */
+uint64_t pdl_host_elapsed_us(void);
+/* What pdl_sleep_ms does on the host: by default it runs the cycles that
+ * start within the interval; a simulator that drives the cycles itself (the
+ * arena, emu/world/host/pdl_app_host.c) hands main's waits to this hook.
+ * NULL restores the default. */
+void pdl_host_set_sleep_hook(int (*hook)(uint32_t ms));
+
 #endif /* PDL_HOST_H */

@@ -509,6 +509,119 @@ static void test_dt(void **state)
 static struct pdl_fquantity fq;
 static void fq_add(void) { add_value(fq, 0.75); add_value(fq, 0.5f); }
 
+/* ---- narrow integer quantities: the same semantics at each type's edges ---- */
+static struct pdl_quantity_int8 n_i8;
+static struct pdl_quantity_int16 n_i16;
+static struct pdl_quantity_uint8 n_u8;
+static struct pdl_quantity_uint16 n_u16;
+static int64_t narrow_add;              /* what each of two processes adds this cycle */
+static int narrow_seen[4][2];           /* value() seen by the first and second process */
+
+static void narrow_first(void)
+{
+    narrow_seen[0][0] = value(n_i8);
+    narrow_seen[1][0] = value(n_i16);
+    narrow_seen[2][0] = value(n_u8);
+    narrow_seen[3][0] = value(n_u16);
+    add_value(n_i8, narrow_add);
+    add_value(n_i16, narrow_add);
+    add_value(n_u8, narrow_add);
+    add_value(n_u16, narrow_add);
+}
+
+static void narrow_second(void)
+{
+    narrow_seen[0][1] = value(n_i8);
+    narrow_seen[1][1] = value(n_i16);
+    narrow_seen[2][1] = value(n_u8);
+    narrow_seen[3][1] = value(n_u16);
+    add_value(n_i8, narrow_add);
+    add_value(n_i16, narrow_add);
+    add_value(n_u8, narrow_add);
+    add_value(n_u16, narrow_add);
+}
+
+/* One cycle with both processes adding `add`; the four values after it. */
+static void narrow_cycle(int64_t add, int expect[4])
+{
+    int before[4] = {value(n_i8), value(n_i16), value(n_u8), value(n_u16)};
+    int k;
+    narrow_add = add;
+    assert_int_equal(pdl_run_cycles(1), 1);
+    for (k = 0; k < 4; k++) {
+        /* both processes saw the previous cycle's value */
+        assert_int_equal(narrow_seen[k][0], before[k]);
+        assert_int_equal(narrow_seen[k][1], before[k]);
+    }
+    assert_int_equal(value(n_i8), expect[0]);
+    assert_int_equal(value(n_i16), expect[1]);
+    assert_int_equal(value(n_u8), expect[2]);
+    assert_int_equal(value(n_u16), expect[3]);
+}
+
+static void test_narrow_quantities(void **state)
+{
+    (void)state;
+    /* bounds: the full range of each type */
+    assert_int_equal(add_quantity_int8(&n_i8, INT8_MIN, INT8_MAX, 0), PDL_OK);
+    assert_int_equal(add_quantity_int16(&n_i16, INT16_MIN, INT16_MAX, 0), PDL_OK);
+    assert_int_equal(add_quantity_uint8(&n_u8, 0, UINT8_MAX, 0), PDL_OK);
+    assert_int_equal(add_quantity_uint16(&n_u16, 0, UINT16_MAX, 0), PDL_OK);
+    /* value() has the quantity's own type */
+    assert_true(__builtin_types_compatible_p(__typeof__(value(n_i8)), int8_t));
+    assert_true(__builtin_types_compatible_p(__typeof__(value(n_u16)), uint16_t));
+    assert_int_equal(add_process(narrow_first), 0);
+    assert_int_equal(add_process(narrow_second), 1);
+    assert_int_equal(run_pdl(), PDL_OK);
+    /* summed: 2 x 50 */
+    narrow_cycle(50, (int[4]){100, 100, 100, 100});
+    /* the sum 2 x 20 passes int8's max by 13: clipped, not wrapped */
+    narrow_cycle(20, (int[4]){127, 140, 140, 140});
+    /* one below each type's top: 2 x 127 */
+    narrow_cycle(127, (int[4]){127, 394, 255, 394});
+    /* far past every top (and past 32 bits): clipped to each max */
+    narrow_cycle(INT64_C(1) << 40, (int[4]){INT8_MAX, INT16_MAX, UINT8_MAX, UINT16_MAX});
+    /* the int64 sum saturates (2 x INT64_MAX): still the max, no wrap */
+    narrow_cycle(INT64_MAX, (int[4]){INT8_MAX, INT16_MAX, UINT8_MAX, UINT16_MAX});
+    /* down past every bottom: clipped to each min (0 for the unsigned ones) */
+    narrow_cycle(INT64_MIN, (int[4]){INT8_MIN, INT16_MIN, 0, 0});
+    /* exactly to the bottom and one step up */
+    narrow_cycle(0, (int[4]){INT8_MIN, INT16_MIN, 0, 0});
+    narrow_cycle(1, (int[4]){INT8_MIN + 2, INT16_MIN + 2, 2, 2});
+    /* a cycle without contributions keeps the values */
+    narrow_add = 0;
+    assert_int_equal(pdl_run_cycles(1), 1);
+    assert_int_equal(value(n_u8), 2);
+}
+
+static void test_narrow_bounds_and_misuse(void **state)
+{
+    struct pdl_stats st;
+    (void)state;
+    /* narrower bounds than the type: clipped to them */
+    assert_int_equal(add_quantity_int8(&n_i8, -10, 10, 0), PDL_OK);
+    assert_int_equal(add_quantity_uint16(&n_u16, 100, 200, 150), PDL_OK);
+    assert_int_equal(add_quantity_int16(&n_i16, 5, 4, 5), PDL_ERR_BOUNDS);
+    assert_int_equal(add_quantity_uint8(&n_u8, 10, 20, 9), PDL_ERR_BOUNDS);
+    assert_int_equal(add_quantity_int8(&n_i8, -10, 10, 0), PDL_ERR_TWICE);
+    assert_int_equal(add_quantity_uint8(NULL, 0, 1, 0), PDL_ERR_NULL);
+    /* two more, and a process adding to all four */
+    assert_int_equal(add_quantity_int16(&n_i16, -100, 100, 0), PDL_OK);
+    assert_int_equal(add_quantity_uint8(&n_u8, 0, 255, 0), PDL_OK);
+    assert_int_equal(add_process(narrow_first), 0);
+    assert_int_equal(run_pdl(), PDL_OK);
+    narrow_add = 1000;
+    assert_int_equal(pdl_run_cycles(1), 1);
+    assert_int_equal(value(n_i8), 10);
+    assert_int_equal(value(n_u16), 200);
+    narrow_add = -1000;
+    assert_int_equal(pdl_run_cycles(1), 1);
+    assert_int_equal(value(n_i8), -10);
+    assert_int_equal(value(n_u16), 100);
+    pdl_get_stats(&st);
+    assert_int_equal(st.misuse, 4);
+}
+
 static void test_float_quantity(void **state)
 {
     (void)state;
@@ -888,6 +1001,8 @@ int main(void)
         cmocka_unit_test_setup(test_pv_periods, setup),
         cmocka_unit_test_setup(test_recorded_plan_equals_live_bsched, setup),
         cmocka_unit_test_setup(test_dt, setup),
+        cmocka_unit_test_setup(test_narrow_quantities, setup),
+        cmocka_unit_test_setup(test_narrow_bounds_and_misuse, setup),
         cmocka_unit_test_setup(test_float_quantity, setup),
         cmocka_unit_test(test_mul_shift),
         cmocka_unit_test_setup(test_bindings, setup),

@@ -20,6 +20,7 @@ import xdrlib3
 
 from netpeer import MediumTransport, Peer, Unreachable
 from netpeer.netnode import Board, MediumProcess, ROOT
+from netpeer.__main__ import ranged
 
 PORT_SOAK = 2
 HOST_STATIONS = (9, 10, 11, 12, 13, 14, 15, 8)   # the first is the single host peer's
@@ -42,6 +43,22 @@ def soak_unpack(msg):
     return sender, number
 
 
+def show_live(boards, period=0.2):
+    """Prints each board's console lines as they come, "station N: LINE"
+    (--live: make run APP=netnode)."""
+    shown = [0] * len(boards)
+    while True:
+        for i, b in enumerate(boards):
+            text = b.text()
+            end = text.rfind("\n") + 1
+            for line in text[shown[i]:end].splitlines():
+                # (not QEMU's own word that the soak stopped it)
+                if line.strip() and "terminating on signal" not in line:
+                    print(f"station {b.station}: {line}", flush=True)
+            shown[i] = max(shown[i], end)
+        time.sleep(period)
+
+
 def run(args):
     workdir = tempfile.mkdtemp(prefix="net-soak-")
     sock = os.path.join(workdir, "air.sock")
@@ -61,6 +78,8 @@ def run(args):
         for n, station in enumerate(host_stations):
             hosts.append(HostSoak(Peer(MediumTransport(sock), station, seed=args.seed + n,
                                        fec=args.fec), args.boards, args.messages))
+        if args.live:
+            threading.Thread(target=show_live, args=(boards,), daemon=True).start()
         senders = [threading.Thread(target=h.send_all, daemon=True) for h in hosts]
         for t in senders:
             t.start()
@@ -150,31 +169,64 @@ class HostSoak:
             self.peer.t.clock.notify()         # all_in() may hold now
 
 
+SOAK_USAGE = ("soak.py [--boards 1..4] [--hosts 0..8 | --no-host] [--messages 1..10000] "
+              "[--loss P] [--corrupt P] [--noise P] [--byte-errors P] [--fec] [--seed 0..4294967295] "
+              "[--timeout SECONDS] [--linger 1..3600] [--elf FILE] [-v] [--live]  (P: a probability 0..1)")
+
+
+class SoakParser(argparse.ArgumentParser):
+    """Every bad argument: one line (what is wrong, then the usage) and exit 2."""
+
+    def error(self, message):
+        self.exit(2, f"soak.py: {message}; usage: {SOAK_USAGE}\n")
+
+
+def probability(text):
+    """An argparse type: a probability, a finite number 0..1."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not 0.0 <= v <= 1.0:            # NaN fails both comparisons
+        raise argparse.ArgumentTypeError(f"{text} is not a probability (0..1)")
+    return v
+
+
+def seconds(text):
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not 0.0 < v <= 86400.0:
+        raise argparse.ArgumentTypeError(f"{text} is not a number of seconds (0..86400]")
+    return v
+
+
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--boards", type=int, default=2)
-    ap.add_argument("--messages", type=int, default=5)
-    ap.add_argument("--loss", type=float, default=0.0)
-    ap.add_argument("--corrupt", type=float, default=0.0)
-    ap.add_argument("--noise", type=float, default=0.0)
-    ap.add_argument("--byte-errors", type=float, default=0.0, help="per character (medium)")
+    ap = SoakParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--boards", type=ranged("number of boards", 1, 4), default=2)
+    ap.add_argument("--messages", type=ranged("number of messages", 1, 10000), default=5)
+    ap.add_argument("--loss", type=probability, default=0.0)
+    ap.add_argument("--corrupt", type=probability, default=0.0)
+    ap.add_argument("--noise", type=probability, default=0.0)
+    ap.add_argument("--byte-errors", type=probability, default=0.0, help="per character (medium)")
     ap.add_argument("--fec", action="store_true", help="Reed-Solomon frames on every station")
-    ap.add_argument("--seed", type=int, default=1)
-    ap.add_argument("--timeout", type=float, default=300.0)
-    ap.add_argument("--linger", type=int, default=60, help="s a board waits for its peers")
-    ap.add_argument("--hosts", type=int, default=1,
-                    help=f"host peers (0..{len(HOST_STATIONS)}), stations {HOST_STATIONS}")
+    ap.add_argument("--seed", type=ranged("seed", 0, 2**32 - 1), default=1)
+    ap.add_argument("--timeout", type=seconds, default=300.0)
+    ap.add_argument("--linger", type=ranged("linger time", 1, 3600), default=60,
+                    help="s a board waits for its peers")
+    ap.add_argument("--hosts", type=ranged("number of host peers", 0, len(HOST_STATIONS)),
+                    default=1, help=f"host peers (0..{len(HOST_STATIONS)}), stations {HOST_STATIONS}")
     ap.add_argument("--no-host", dest="hosts", action="store_const", const=0)
     ap.add_argument("--elf", default=os.path.join(ROOT, "build", "firmware", "netnode",
                                                   "netnode.elf"))
-    ap.add_argument("-v", "--verbose", action="store_true")
+    ap.add_argument("-v", "--verbose", action="store_true", help="every board's console at the end")
+    ap.add_argument("--live", action="store_true", help="every board's console lines as they come")
     args = ap.parse_args(argv)
-    if not 1 <= args.boards <= 4:
-        ap.error("BOARDS is 1 to 4")
-    if not 0 <= args.hosts <= len(HOST_STATIONS) or args.boards + args.hosts < 2:
-        ap.error(f"HOSTS is 0 to {len(HOST_STATIONS)}, and there are at least 2 stations")
-    if not all(0 <= p <= 1 for p in (args.loss, args.corrupt, args.byte_errors, args.noise)):
-        ap.error("LOSS, CORRUPT, BYTE_ERRORS and NOISE are probabilities 0..1")
+    if args.boards + args.hosts < 2:
+        ap.error("there must be at least 2 stations (boards + host peers)")
+    if not os.path.isfile(args.elf):
+        ap.error(f"--elf {args.elf}: no such file")
     return run(args)
 
 

@@ -146,6 +146,52 @@ def test_bad_option_is_one_usage_line_and_exit_2(tmp_path, capsys, host_lib, arg
     assert cap.out == ""
 
 
+def bad_command_lines(tmp_path, host_lib):
+    """Command lines wrong as a whole (not one option's value): what each must say."""
+    text = tmp_path / "not_a_library.so"
+    text.write_text("not a library\n")
+    out = str(tmp_path / "out")
+    return [
+        (["--host", "--out", out], "--host needs --host-lib"),
+        (["--out", out], "the emulated mode needs --elf and --qemu"),
+        (["--elf", str(tmp_path / "none.elf"), "--qemu", "/bin/true", "--out", out],
+         "none.elf: no such file"),
+        (["--elf", str(text), "--qemu", str(tmp_path / "no-qemu"), "--out", out],
+         "no-qemu: no such file"),
+        (["--host", "--host-lib", str(tmp_path / "none.so"), "--out", out], "none.so: no such file"),
+        (["--host", "--host-lib", str(text), "--out", out], "not a loadable library"),
+        (["--host", "--host-lib", host_lib, "--out", out, "--frobnicate"],
+         "unrecognized arguments: --frobnicate"),
+        (["--host", "--host-lib", host_lib, "--out", out, "--step-ms", "abc"], "--step-ms"),
+        (["--host", "--host-lib", host_lib, "--out", out, "--arena"], "--arena: expected one argument"),
+    ]
+
+
+def test_bad_command_line_is_one_usage_line_and_exit_2(tmp_path, capsys, host_lib):
+    for args, says in bad_command_lines(tmp_path, host_lib):
+        with pytest.raises(SystemExit) as e:
+            run.main(args)
+        cap = capsys.readouterr()
+        assert e.value.code == 2, args
+        lines = cap.err.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("run.py: ") and says in lines[0], (args, cap.err)
+        assert "(usage: run.py " in lines[0] and cap.out == "", (args, cap.out)
+
+
+@pytest.mark.parametrize("where", ["trace", "out"])
+def test_unwritable_trace_or_out_is_one_line_and_exit_2(tmp_path, capsys, host_lib, where):
+    blocker = tmp_path / "a_file"
+    blocker.write_text("")
+    paths = {"trace": str(tmp_path / "trace.txt"), "out": str(tmp_path / "out")}
+    paths[where] = str(blocker / "below")         # under a file: cannot be made
+    rc = run.main(["--host", "--host-lib", host_lib, "--seconds", "1", "--view", "none",
+                   "--out", paths["out"], "--trace", paths["trace"]])
+    cap = capsys.readouterr()
+    assert rc == 2
+    lines = cap.err.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("run.py: ") and "below" in lines[0], cap.err
+
+
 def touching_an_obstacle(tmp_path):
     """The default arena with the robot's disc overlapping the round obstacle
     (at 2.0, 1.5, radius 0.18): the first step pushes it out."""

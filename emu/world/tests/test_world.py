@@ -135,3 +135,25 @@ def test_motor_model_matches_the_board_response():
     assert m.speed == pytest.approx(2000.0 * (1 - math.exp(-20.0)))
     assert abs(turned - exact) <= 1
     assert m.advance(-1.0, 1.0) < 0
+
+
+def test_robot_wiring_names_match_the_arena():
+    """pdl/robot.h names the ports the arena's robot is wired to: every arena
+    file's wiring must be the one those names say."""
+    import re
+    root = os.path.join(os.path.dirname(__file__), "..", "..", "..")
+    text = open(os.path.join(root, "pdl", "robot.h")).read()
+    names = dict((n, (p, int(i))) for n, p, i in
+                 re.findall(r"#define (ROBOT_\w+) +(PDL_\w+), (\d+)", text))
+    key = {"LIGHT_LEFT": "ain_light_left", "LIGHT_RIGHT": "ain_light_right",
+           "IR_LEFT": "ain_ir_left", "IR_RIGHT": "ain_ir_right", "BATTERY": "ain_battery",
+           "COMP_LEFT": "ain_comp_left", "COMP_RIGHT": "ain_comp_right",
+           "BUMPER_LEFT": "ip_bumper_left", "BUMPER_RIGHT": "ip_bumper_right",
+           "CHARGING": "ip_charging", "MOTOR_LEFT": "motor_left", "MOTOR_RIGHT": "motor_right"}
+    port = {"ain": "PDL_ANALOG_IN", "ip": "PDL_BINARY_IN", "motor": "PDL_MOTOR"}
+    assert sorted(names) == sorted("ROBOT_" + k for k in key)
+    arenas = os.path.join(root, "emu", "world", "arenas")
+    for f in sorted(os.listdir(arenas)):
+        wiring = json.load(open(os.path.join(arenas, f)))["wiring"]
+        for short, field in key.items():
+            assert names["ROBOT_" + short] == (port[field.split("_")[0]], wiring[field]), (f, short)
