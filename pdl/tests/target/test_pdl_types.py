@@ -9,7 +9,7 @@ import os
 import subprocess
 from pathlib import Path
 
-import qtestlib
+import robocube_emu
 
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
@@ -27,7 +27,7 @@ def test_every_type_agrees_on_board_and_host_for_1000_cycles():
     want = typed_lines(host.stdout)
     assert len(want) == CYCLES + 1 and want[-1] == "TYPES done", host.stdout[-500:]
     elf = FW / "pdl_types" / "pdl_types.elf"
-    with qtestlib.Machine(kernel=str(elf), extra_args=["-icount", "shift=8,sleep=off"]) as m:
+    with robocube_emu.Machine(kernel=str(elf), extra_args=["-icount", "shift=8,sleep=off"]) as m:
         text = m.console.read_until(b"TYPES done", timeout=120).decode("latin-1")
     got = typed_lines(text)
     assert len(got) == len(want), text[-500:]
