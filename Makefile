@@ -52,6 +52,8 @@ include bsched/bsched.mk
 -include $(sort $(wildcard assure/*.mk))
 # Firmware images last: they use the kernel's and the libraries' source lists.
 include apps/apps.mk
+# The bench: the library and Fig. 7 on the host and on a bare CPU32 image.
+include bench/bench.mk
 
 .PHONY: all check setup run clean
 all: $(ALL)

@@ -25,7 +25,7 @@ check-bsched-build:
 	@pass=0; fail=0; \
 	for cfg in "$(HOST_CC) $(HOST_CFLAGS)" "$(HOST_CC) $(HOST_CFLAGS) -DBSCHED_MAX_PROCS=65535" \
 	           "$(CROSS_CC) $(CROSS_CFLAGS)" "$(CROSS_CC) $(CROSS_CFLAGS) -DBSCHED_MAX_PROCS=65535"; do \
-	    for src in bsched/bsched.c bsched/ref/bsched_fig7.c; do \
+	    for src in bsched/bsched.c bsched/proofs/ref/bsched_fig7.c; do \
 	        if $$cfg -Ibsched -c -o /dev/null $$src; then pass=$$((pass+1)); echo "ok: $$cfg $$src"; \
 	        else fail=$$((fail+1)); echo "FAILED: $$cfg $$src"; fi; \
 	    done; \
@@ -46,6 +46,4 @@ check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
 
-include bsched/ref/ref.mk
-include bsched/bench/bench.mk
 include bsched/dist/dist.mk

@@ -14,7 +14,7 @@ DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 # Repository paths, kept as they are inside the bundle (so the proof jobs' own
 # Makefiles run unchanged there).
 DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
-    bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/ref/tests/test_bsched_fig7.c \
+    bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/proofs/ref/tests/test_bsched_fig7.c \
     bsched/tests/test_bsched.c bsched/tests/table2.h bsched/proofs/README.md bsched/CAVEATS.md \
     bsched/proofs/tools.txt bsched/proofs/tools_check.py \
     $(filter-out %.pyc,$(shell find bsched/proofs/wp bsched/proofs/cbmc -type f -not -path '*/__pycache__/*'))

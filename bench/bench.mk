@@ -1,5 +1,5 @@
 # make bench: instructions per minor cycle of Fig. 7 (the reference engine
-# bsched/ref/bsched_fig7.c) and of the library's bsched_step side by side,
+# bsched/proofs/ref/bsched_fig7.c) and of the library's bsched_step side by side,
 # N = 9 (Table 1), 64, 256, 1024, 4096 (pv 3..12), on the host (callgrind) and on
 # the emulated CPU32 (QEMU's instruction log); also bsched_init, bsched_fig7_start
 # and the state's bytes per process. One line per case.
@@ -8,21 +8,21 @@
 BENCH_DIR    := $(BUILD)/bench
 BENCH_PROCS  := 4096
 BENCH_CYCLES ?= 256
-BENCH_LIB    := bsched/bsched.c bsched/ref/bsched_fig7.c
-BENCH_HDRS   := bsched/bsched.h bsched/ref/bsched_fig7.h bsched/bench/bench_core.h
+BENCH_LIB    := bsched/bsched.c bsched/proofs/ref/bsched_fig7.c
+BENCH_HDRS   := bsched/bsched.h bsched/proofs/ref/bsched_fig7.h bench/bench_core.h
 # The CPU32 image: the firmware's startup and console, no kernel; the library at
 # BSCHED_MAX_PROCS = 4096 (the firmware base objects carry it at 16).
 BENCH_FW_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c kernel/lib/kprintf.c \
                  kernel/lib/kstring.c drivers/duart_console.c drivers/pit.c drivers/led.c \
-                 bsched/bench/bench_cpu32.c $(BENCH_LIB)
+                 bench/bench_cpu32.c $(BENCH_LIB)
 BENCH_FW_OBJS := $(patsubst %,$(BENCH_DIR)/cpu32/%.o,$(BENCH_FW_SRCS))
 BENCH_FW_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=% -MMD -MP,$(FW_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
-                 -I$(ROOT)/bsched/ref -DBENCH_CYCLES=$(BENCH_CYCLES)u
+                 -I$(ROOT)/bsched/proofs/ref -DBENCH_CYCLES=$(BENCH_CYCLES)u
 
-$(BENCH_DIR)/bsched-bench: bsched/bench/bench_host.c $(BENCH_LIB) $(BENCH_HDRS)
+$(BENCH_DIR)/bsched-bench: bench/bench_host.c $(BENCH_LIB) $(BENCH_HDRS)
 	@mkdir -p $(@D)
-	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/ref -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
-	    bsched/bench/bench_host.c $(BENCH_LIB)
+	$(HOST_CC) $(BSCHED_CFLAGS) -I$(ROOT)/bsched/proofs/ref -DBSCHED_MAX_PROCS=$(BENCH_PROCS) -o $@ \
+	    bench/bench_host.c $(BENCH_LIB)
 
 $(BENCH_DIR)/cpu32/%.c.o: %.c $(BENCH_HDRS)
 	@mkdir -p $(@D)
@@ -38,19 +38,6 @@ $(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) kernel/arch/cpu32/robocube.ld $(C
 bench:
 	@$(SETUP) base m68k qemu
 	@$(MAKE) --no-print-directory $(BENCH_DIR)/bsched-bench $(BENCH_DIR)/bench-cpu32.elf
-	@flock /tmp/bsched-heavy.lock python3 bsched/bench/bench.py --host $(BENCH_DIR)/bsched-bench \
+	@flock /tmp/bsched-heavy.lock python3 bench/bench.py --host $(BENCH_DIR)/bsched-bench \
 	    --elf $(BENCH_DIR)/bench-cpu32.elf --qemu $(QEMU_M68K) --cycles $(BENCH_CYCLES) \
 	    --out $(BENCH_DIR)/bench.txt
-
-# make bench-prototype [PROTOTYPE=v7]: make bench on a design prototype of the
-# next minor-cycle layout (bsched/bench/prototype/README.md: measured, at most
-# partly proven), applied as a patch to a copy of the tree in build/prototype-NAME/.
-# Writes build/bench/prototype-NAME.txt, with the text size of its bsched.o
-# (CROSS_CFLAGS: -Os, CPU32, default capacity). Not part of make check.
-PROTOTYPE ?= v7
-.PHONY: bench-prototype
-bench-prototype:
-	@$(SETUP) base m68k qemu
-	@mkdir -p $(BENCH_DIR)
-	@CROSS_CC='$(CROSS_CC)' CROSS_CFLAGS='$(CROSS_CFLAGS)' \
-	    bsched/bench/prototype/run.sh $(PROTOTYPE) $(BUILD) $(QEMU_M68K)
