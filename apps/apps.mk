@@ -99,7 +99,7 @@ firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from
 # timeout or a traceback from a runner (the ecosystem's SEED and SIM_SECONDS:
-# emu/eco.mk).
+# emu/world/world.mk).
 RUN_SECONDS ?=
 ifneq ($(filter run,$(MAKECMDGOALS)),)
 ifneq ($(RUN_SECONDS),)

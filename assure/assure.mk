@@ -26,15 +26,10 @@ $(BUILD)/tests/test_bsched_edges: bsched/tests/test_bsched_edges.c bsched/bsched
 	$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ $< bsched/bsched.c -lcmocka
 ALL += $(BUILD)/tests/test_bsched_edges
 
-# A cmocka program's counts: $(call cmocka_counts,OUTPUT-VAR) sets p and f.
-cmocka_counts = p=$$(echo "$$$(1)" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	f=$$(echo "$$$(1)" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1)
-
 .PHONY: check-bsched-edges
 check-bsched-edges: $(BUILD)/tests/test_bsched_edges
 	@$(SETUP) base
-	@out=$$($< 2>&1); rc=$$?; echo "$$out"; $(call cmocka_counts,out); \
-	$(call record,bsched-edges,$${p:-0},$${f:-$$((rc != 0))}); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-edges $<
 
 # ---------------------------------------------------------------- sanitizers
 # Every host unit suite again, built with ASan+UBSan into its own BUILD tree.

@@ -12,8 +12,8 @@ BENCH_LIB    := bsched/bsched.c bsched/proofs/ref/bsched_fig7.c
 BENCH_HDRS   := bsched/bsched.h bsched/proofs/ref/bsched_fig7.h bench/bench_core.h
 # The CPU32 image: the firmware's startup and console, no kernel; the library at
 # BSCHED_MAX_PROCS = 4096 (the firmware base objects carry it at 16).
-BENCH_FW_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c kernel/lib/kprintf.c \
-                 kernel/lib/kstring.c drivers/duart_console.c drivers/pit.c drivers/led.c \
+BENCH_FW_SRCS := boards/robocube/start.S kernel/arch/cpu32/exceptions.c kernel/lib/kprintf.c \
+                 kernel/lib/kstring.c boards/robocube/duart_console.c boards/robocube/pit.c \
                  bench/bench_cpu32.c $(BENCH_LIB)
 BENCH_FW_OBJS := $(patsubst %,$(BENCH_DIR)/cpu32/%.o,$(BENCH_FW_SRCS))
 BENCH_FW_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=% -MMD -MP,$(FW_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
@@ -31,7 +31,7 @@ $(BENCH_DIR)/cpu32/%.S.o: %.S
 	@mkdir -p $(@D)
 	$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
 
-$(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) kernel/arch/cpu32/robocube.ld $(CPU32_RT)
+$(BENCH_DIR)/bench-cpu32.elf: $(BENCH_FW_OBJS) $(FW_LDSCRIPT) $(CPU32_RT)
 	$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(BENCH_FW_OBJS) $(CPU32_RT)
 
 .PHONY: bench

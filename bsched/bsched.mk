@@ -32,18 +32,11 @@ check-bsched-build:
 	done; \
 	$(call record,bsched-build,$$pass,$$fail)
 
-# $(call cmocka_suite,SUITE,BINARY): runs a cmocka binary and records its counts.
-cmocka_suite = out=$$($(2) 2>&1); rc=$$?; echo "$$out"; \
-	p=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	f=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	$(call record,$(1),$${p:-0},$${f:-0}); [ $$rc -eq 0 ]
-
 check-bsched-unit: $(BUILD)/tests/test_bsched
 	@$(SETUP) base
-	@$(call cmocka_suite,bsched-unit,$(BUILD)/tests/test_bsched)
+	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-unit $(BUILD)/tests/test_bsched
 
 check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
 
-include bsched/dist/dist.mk

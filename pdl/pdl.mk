@@ -76,10 +76,8 @@ check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 	if $(PDL_README_TEST); then p=1; else f=1; rc=1; fi; \
 	for t in $(PDL_HOST_TESTS); do \
 	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	    read -r tp tf <<< "$$(echo "$$out" | ci/cmocka-suite --count)"; \
+	    p=$$((p + tp)); f=$$((f + tf)); \
 	done; \
 	for src in $(PDL_REFUSE_SRCS); do \
 	    want=$$(sed -n '1s|^// expect: ||p' $$src); \

@@ -1,10 +1,47 @@
 # The ecosystem robot: the behaviour program (eco_program.c) on the
 # nanokernel's B-scheduler thread, one minor cycle every 2 ticks of 128 Hz
-# (64 Hz), against the simulated world in lockstep (emu/world/).
-# `make run` (APP=ecosystem, the default) starts it through the host runner.
+# (64 Hz), against the simulated world in lockstep (emu/world/, its runner).
+# The same program on the PDL host runtime (host/eco_host.c, pdl/host/) is the
+# world's fast mode. `make run` (APP=ecosystem, the default) starts it
+# through the world's runner.
+#
+#   make run                        the ecosystem (SIM_SECONDS, SEED, ARENA: emu/world/world.mk)
+#   make eco-host                   build/world/libeco_host.so (the program for the host)
+#   make check-eco                  world, lockstep and ecosystem tests (pytest, ~2-3 min)
+#   make eco-survival               the full goal: 10 virtual minutes on the emulated board
 ecosystem_TICK_HZ := 128
-ecosystem_RUNNER  = $(PYTHON) $(ROOT)/emu/world/run.py --elf $(call app_elf,ecosystem) \
-                    --qemu $(QEMU_M68K) --host-lib $(ECO_HOST_LIB) $(ECO_RUN_ARGS)
+ECO_HOST_LIB := $(BUILD)/world/libeco_host.so
+ECO_ELF       = $(call app_elf,ecosystem)
+ecosystem_RUNNER  = $(PYTHON) $(WORLD_RUN) --elf $(ECO_ELF) \
+                    --qemu $(QEMU_M68K) --host-lib $(ECO_HOST_LIB) $(WORLD_RUN_ARGS)
 ecosystem_RUN_DEPS = eco-host
 # Its main starts the board itself (board_start ... k_start).
 ecosystem_BOOT := self
+
+CHECKS += eco
+ALL    += $(ECO_HOST_LIB)
+
+.PHONY: eco-host check-eco eco-survival
+eco-host: $(ECO_HOST_LIB)
+
+# The PDL program on the PDL host runtime (pdl/pdl.mk's PDL_HOST_SRCS: the
+# same pdl_core.c and bsched.c as on the board), for the host (ctypes).
+$(ECO_HOST_LIB): apps/ecosystem/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
+                 $(PDL_HOST_SRCS) $(PDL_HEADERS)
+	@mkdir -p $(@D)
+	$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -I$(ROOT) -Ibsched -Iapps/ecosystem -o $@ \
+	    apps/ecosystem/host/eco_host.c apps/ecosystem/eco_program.c $(PDL_HOST_SRCS)
+
+ECO_TEST_ENV = BSCHED_QEMU=$(QEMU_M68K) ECO_ELF=$(ECO_ELF) ECO_HOST_LIB=$(ECO_HOST_LIB)
+
+check-eco:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware eco-host APP=ecosystem
+	@$(ECO_TEST_ENV) $(ROOT)/ci/pytest-suite eco $(ROOT)/emu/world/tests
+
+# The goal on the emulated board, 10 virtual minutes (a few minutes of wall time).
+eco-survival:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware eco-host APP=ecosystem
+	@$(ECO_TEST_ENV) ECO_SURVIVAL_SECONDS=600 $(PYTHON) -m pytest -q -rP -p no:cacheprovider \
+	    $(ROOT)/emu/world/tests/test_ecosystem.py -k survival_emulated_and_alike

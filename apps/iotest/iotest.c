@@ -35,7 +35,7 @@
 #include "drivers/binin.h"
 #include "drivers/board_io.h"
 #include "drivers/drv_err.h"
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "drivers/fastout.h"
 #include "drivers/i2c.h"
 #include "drivers/sampler.h"

@@ -29,7 +29,7 @@
 #include "kernel.h"
 #include "drivers/board.h"
 #include "drivers/drv_err.h"
-#include "drivers/mc68681.h"
+#include "boards/robocube/mc68681.h"
 #include "drivers/motor.h"
 #include "drivers/odometry.h"
 #include "drivers/tpu.h"

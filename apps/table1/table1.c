@@ -30,9 +30,9 @@
 #include "drivers/board.h"
 #include "k_board.h"
 #include "k_bsched.h"
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "drivers/led.h"
-#include "mc68332.h"
+#include "boards/robocube/mc68332.h"
 
 #ifndef TABLE1_MAJOR_CYCLES
 #define TABLE1_MAJOR_CYCLES 4u

@@ -10,7 +10,7 @@
  */
 #include <stdint.h>
 
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "kernel/lib/kprintf.h"
 
 #ifndef FAULT_KIND

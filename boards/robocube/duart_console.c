@@ -1,7 +1,7 @@
 /* Polled console on MC68681 channel B; see duart_console.h. */
 #include "duart_console.h"
 
-#include "drivers/mc68681.h"
+#include "boards/robocube/mc68681.h"
 #include "kernel/lib/kprintf.h"
 
 /*
