@@ -6,7 +6,7 @@
 #                                or run the app's host runner if it names one
 #
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
-# console, PIT, LED, bsched.c: kernel/firmware.mk), the C library and the CPU32
+# console, PIT, LED, bsched.c: boards/robocube/board.mk), the C library and the CPU32
 # compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel and the
 # libraries drivers/, net/ and pdl/ (every *.c directly in those folders; host
 # code and tests live in their subfolders). The kernel and the libraries are

@@ -174,3 +174,12 @@ WP_MACHDEPS ?= x86_64 x86_32 x86_16
 prove-machdeps:
 	@$(SETUP) frama-c
 	@$(ASSURE_PY)/prove_machdeps.sh $(BUILD) $(WP_MACHDEPS)
+
+# ---------------------------------------------------------------- layering
+# Includes and Python imports between top-level folders point down only, with
+# no circle; the allowed graph is in assure/layering.py. About 1 s.
+CHECKS += layering
+.PHONY: check-layering
+check-layering:
+	@$(SETUP) base
+	@$(PYTHON) assure/layering.py --results $(RESULTS)/layering.txt

@@ -466,7 +466,8 @@ def main():
     ap.add_argument('--suite')
     a = ap.parse_args()
     headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h')) + \
-        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'drivers/*.h'))
+        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'boards/robocube/*.h')) + \
+        glob.glob(os.path.join(ROOT, 'drivers/*.h'))
     ok = bad = known = at_risk = 0
     known_list = {}
     kp = os.path.join(ROOT, 'assure', 'stack-known.txt')
@@ -494,7 +495,7 @@ def main():
         linked = elf_functions(elf)
         sources = sorted(set(glob.glob(os.path.join(ROOT, 'apps', app, '*.c')) +
                              glob.glob(os.path.join(ROOT, 'kernel', '*.c')) +
-                             [f for d in ('drivers', 'net', 'pdl') for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
+                             [f for d in ('boards/robocube', 'drivers', 'net', 'pdl') for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
         defs = c_defines(headers + sources + glob.glob(os.path.join(ROOT, 'apps', app, '*.h')))
         threads = find_threads(sources + headers, defs, linked)
         sized = {t[1] for t in threads if t[2] is not None}

@@ -45,3 +45,28 @@ eco-survival:
 	@$(MAKE) --no-print-directory firmware eco-host APP=ecosystem
 	@$(ECO_TEST_ENV) ECO_SURVIVAL_SECONDS=600 $(PYTHON) -m pytest -q -rP -p no:cacheprovider \
 	    $(ROOT)/emu/world/tests/test_ecosystem.py -k survival_emulated_and_alike
+
+# The host library's dependencies are complete: make calls it up to date after
+# a build, and out of date (and rebuilds it) once any of its sources is new
+# (make -W: as if touched, without changing the tree other suites read). A few
+# seconds (one rebuild of the library).
+# The list is written out, not taken from the variables the rule uses, so that
+# a variable read before it is set (a make file included too early) shows.
+ECO_HOST_DEP_SRCS := apps/ecosystem/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
+                     pdl/pdl_core.c pdl/pdl_bind.c pdl/host/pdl_host.c bsched/bsched.c \
+                     pdl/pdl.h pdl/host/pdl_host.h bsched/bsched.h
+CHECKS += eco-host-deps
+.PHONY: check-eco-host-deps
+check-eco-host-deps: $(ECO_HOST_LIB)
+	@pass=0; fail=0; lib=$(ECO_HOST_LIB); \
+	if $(MAKE) --no-print-directory -q $$lib; then pass=$$((pass+1)); echo "ok: $$lib up to date after its build"; \
+	else fail=$$((fail+1)); echo "FAILED: $$lib out of date right after its build"; fi; \
+	for src in $(ECO_HOST_DEP_SRCS); do \
+	    if $(MAKE) --no-print-directory -q -W $$src $$lib; then fail=$$((fail+1)); echo "FAILED: $$src new, and make calls $$lib up to date (a stale build)"; \
+	    else pass=$$((pass+1)); echo "ok: $$src new: $$lib is rebuilt"; fi; \
+	done; \
+	before=$$(stat -c %Y.%y $$lib); sleep 1; \
+	if $(MAKE) --no-print-directory -W bsched/bsched.c $$lib >/dev/null && [ "$$(stat -c %Y.%y $$lib)" != "$$before" ]; then \
+	    pass=$$((pass+1)); echo "ok: bsched/bsched.c new: make rebuilt $$lib"; \
+	else fail=$$((fail+1)); echo "FAILED: bsched/bsched.c new: make did not rebuild $$lib"; fi; \
+	$(call record,eco-host-deps,$$pass,$$fail); echo "eco-host-deps: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]

@@ -17,7 +17,7 @@
  * at each of its actual runs, and the B-scheduler thread's overrun count.
  *
  * Tick rate: this image builds the kernel with K_TICK_HZ = 128 (PIT PITM =
- * 64, 7.8125 ms; kernel/firmware.mk FW_TICK_HZ) instead of the kernel's
+ * 64, 7.8125 ms; boards/robocube/board.mk FW_TICK_HZ) instead of the kernel's
  * default 1024 Hz, because every minor cycle prints its line: up to 26
  * characters, 6.8 ms at 38400 baud on real hardware, about 2.8 KB/s on
  * average at 128 Hz, within the console's 3.84 KB/s. At 1024 Hz the console

@@ -1,6 +1,6 @@
 /*
  * What the nanokernel needs from a board. The RoboCube implements it in
- * drivers/k_board_robocube.c: the PIT drives k_tick, the console on DUART
+ * boards/robocube/k_board_robocube.c: the PIT drives k_tick, the console on DUART
  * channel B becomes interrupt-driven behind a ring buffer.
  */
 #ifndef K_BOARD_H
