@@ -14,8 +14,8 @@
  * counted by the kernel thread and reported on the console by its reporter
  * thread; pdl_get_stats() returns them.
  *
- * The drivers come from the `drivers` and `motion` branches
- * (/work/briefs/driver-api.md). A port whose driver is not in the tree is
+ * The drivers are those of drivers/ (drivers/README.md). A port whose
+ * driver is not in the tree is
  * refused when run_pdl() starts (PDL_ERR_DRIVER, reported), so an image
  * without it still builds and runs programs that do not use that port.
  */

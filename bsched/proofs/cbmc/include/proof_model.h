@@ -9,7 +9,7 @@
  *                     a Makefile then runs one CBMC job per n (see Makefile.common)
  *
  * The specification side is written from the paper and the hand proof
- * (/work/shared/notes/why-b-schedules-are-balanced.md), not from bsched.c:
+ * that B-schedules are balanced, not from bsched.c:
  * utilisation is a fixed-point sum with 2^P as the unit, and everything on the
  * hot paths uses masks and shifts, never % or / by a variable.
  */
