@@ -10,7 +10,7 @@
 PDL_BUILD      := $(BUILD)/pdl
 # The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
 # the host platform in pdl/host/.
-PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c
+PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c
 PDL_HOST_SRCS  := $(PDL_CORE_SRCS) pdl/host/pdl_host.c bsched/bsched.c
 PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h
 PDL_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/bsched

@@ -31,12 +31,16 @@ int pdl_core_plan(void);
 /* run_pdl's common part: plan, bring up the ports, mark the set started
  * (declarations are refused from now on), write the initial actuator values. */
 int pdl_core_start(void);
+void pdl_core_reset(void);
+
+/* ---- shared state below the core and the binding table (pdl_state.c) ---- */
+/* Non-zero once run_pdl() started the set (declarations are refused). */
+extern int pdl_started;
 /* Marks the set as started (refuses further declarations). */
 void pdl_core_set_started(int started);
 int pdl_core_started(void);
 /* Counts and reports a refused call; returns code. */
 int pdl_refuse(int code, const char *what);
-void pdl_core_reset(void);
 /* Statistics the platform keeps (overruns, cycle ticks). */
 extern struct pdl_stats pdl_stats;
 /* Nominal cycle period (the platform sets it from f0). */
