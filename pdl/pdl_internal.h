@@ -63,6 +63,8 @@ void pdl_bind_refresh_sensors(void);
 void pdl_bind_write_actuators(int force);
 /* Valid port/index for a direction: PDL_OK or PDL_ERR_PORT. */
 int pdl_port_check(enum pdl_port port, unsigned index, int output);
+/* The port's kind in the board's port table (drivers/sai_ports.h), or -1. */
+int pdl_port_kind(enum pdl_port port);
 void pdl_bind_reset(void);
 
 /* ---- platform ports ---- */
