@@ -12,7 +12,9 @@ PDL_BUILD      := $(BUILD)/pdl
 # the host platform in pdl/host/.
 PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c
 PDL_HOST_SRCS  := $(PDL_CORE_SRCS) pdl/host/pdl_host.c bsched/bsched.c
-PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h
+# The port table (pdl_bind.c's port ranges) and the driver headers it reads.
+PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h drivers/sai_ports.h \
+                  drivers/analog.h drivers/binin.h drivers/bio.h drivers/fastout.h drivers/motor.h drivers/tpu.h
 PDL_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/bsched
 # The example behaviours (compiled for the host here and into apps/pdl_demo for the board).
 PDL_EXAMPLE_SRCS := $(wildcard pdl/examples/*.c)
