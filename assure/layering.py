@@ -26,7 +26,8 @@ import sys
 # Direct dependencies each top-level folder may have; any path along them is
 # allowed too (apps may use the kernel through drivers, or directly).
 #   firmware:  apps -> pdl, net -> drivers -> boards -> kernel (its CPU port
-#              inside it) -> bsched; bsched depends on nothing
+#              inside it) -> bsched; bsched depends on nothing; apps may use
+#              the POSIX layer (posix -> kernel)
 #   host side: emu (the board model and the world) and tools stand beside it;
 #              bench measures bsched on the host and on the board; assure and
 #              ci check everything.
@@ -37,7 +38,8 @@ ALLOWED = {
     "drivers": {"boards"},
     "net": {"drivers"},
     "pdl": {"drivers"},
-    "apps": {"pdl", "net", "emu"},
+    "posix": {"kernel"},
+    "apps": {"pdl", "net", "posix", "emu"},
     "emu": {"tools"},
     "tools": {"bsched"},
     "bench": {"boards"},
