@@ -38,6 +38,9 @@ CPU32_RT := $(ROOT)/build/cpu32-rt/libbuiltins.a
 NEWLIB := $(ROOT)/build/newlib
 FW_LIBC_LIBS := $(NEWLIB)/lib/libc.a $(NEWLIB)/lib/libm.a
 
+# The seed of the runs that take one (make run's world, make net-soak): one default.
+SEED ?= 1
+
 HOST_CC     ?= cc
 HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -Werror
 

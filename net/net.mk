@@ -120,7 +120,6 @@ MESSAGES ?= 5
 LOSS     ?= 0.1
 CORRUPT  ?= 0.1
 BYTE_ERRORS ?= 0
-SEED     ?= 1
 FEC      ?= 0
 net-soak:
 	@$(SETUP) base m68k qemu

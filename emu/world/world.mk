@@ -8,7 +8,6 @@
 
 WORLD_RUN    := $(ROOT)/emu/world/run.py
 SIM_SECONDS  ?= 120
-SEED         ?= 1
 ARENA        ?=
 WORLD_RUN_ARGS  = --seconds $(SIM_SECONDS) --seed $(SEED) $(if $(ARENA),--arena $(ARENA)) --out $(BUILD)/run
 WORLD_RUN_USAGE = make run [SIM_SECONDS=1..86400] [SEED=0..4294967295] [ARENA=FILE]
