@@ -60,7 +60,6 @@ static uint32_t pdl_cycle_count_begun;
 /* Set by the platform (pdl_set_frequency). */
 uint32_t pdl_core_period_us = 1000000u / PDL_DEFAULT_HZ;
 
-
 /* Common checks of add_quantity & co.; returns PDL_OK or the refusal. */
 static int pdl_declare(struct pdl_head *h, const char *fn)
 {

@@ -39,8 +39,15 @@ extern int pdl_started;
 /* Marks the set as started (refuses further declarations). */
 void pdl_core_set_started(int started);
 int pdl_core_started(void);
-/* Counts and reports a refused call; returns code. */
-int pdl_refuse(int code, const char *what);
+/* Counts and reports a refused call (pdl_state.c). */
+void pdl_count_refusal(int code, const char *what);
+/* pdl_count_refusal, then code: inline, so that a caller's analysis sees the
+ * refusal's result (a refused NULL is never dereferenced after it). */
+static inline int pdl_refuse(int code, const char *what)
+{
+    pdl_count_refusal(code, what);
+    return code;
+}
 /* Statistics the platform keeps (overruns, cycle ticks). */
 extern struct pdl_stats pdl_stats;
 /* Nominal cycle period (the platform sets it from f0). */

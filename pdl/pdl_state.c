@@ -9,12 +9,11 @@
 struct pdl_stats pdl_stats;
 int pdl_started;
 
-int pdl_refuse(int code, const char *what)
+void pdl_count_refusal(int code, const char *what)
 {
     pdl_stats.misuse++;
     pdl_stats.last_error = code;
     pdl_platform_report(code, what);
-    return code;
 }
 
 const char *pdl_strerror(int code)
