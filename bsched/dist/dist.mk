@@ -1,4 +1,7 @@
-# The certified core as a drop-in bundle (issue 14).
+# The certified core as a drop-in bundle. It stays in bsched/ because it is part
+# of what an embedder takes: the bundle's Makefile, setup.sh and README are
+# this folder's other files, shipped as they are, and the bundle is built from
+# bsched/ alone (nothing outside it goes in or is read).
 #   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, the WP and CBMC
 #                    proof jobs, unit tests, a README for embedders and a standalone
 #                    Makefile (bsched/dist/Makefile) whose make prove / make cbmc run
