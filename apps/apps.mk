@@ -6,7 +6,7 @@
 #                                or run the app's host runner if it names one
 #
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
-# console, PIT, LED, bsched.c: kernel/firmware.mk), the C library and the CPU32
+# console, PIT, LED, bsched.c: boards/robocube/board.mk), the C library and the CPU32
 # compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel and the
 # libraries drivers/, net/, pdl/ and posix/ (every *.c directly in those folders; host
 # code and tests live in their subfolders). The kernel and the libraries are
@@ -129,7 +129,7 @@ firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from
 # timeout or a traceback from a runner (the ecosystem's SEED and SIM_SECONDS:
-# emu/eco.mk).
+# emu/world/world.mk).
 RUN_SECONDS ?=
 HOST ?=
 WORLD ?=

@@ -48,7 +48,7 @@ for tool in gcc clang; do
     done
     echo "== $tool: $total findings ($gated in $gate)"
     sed 's/^/    /' "$out/$tool-findings.txt" | head -40
-    for part in bsched kernel drivers net pdl tools apps; do
+    for part in bsched kernel boards drivers net pdl tools apps; do
         n=$(grep -c "^$part/" "$out/$tool-findings.txt")
         [ "$n" -gt 0 ] && echo "    $part/: $n"
     done

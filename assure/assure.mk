@@ -27,15 +27,10 @@ $(BUILD)/tests/test_bsched_edges: bsched/tests/test_bsched_edges.c bsched/bsched
 	$(call quiet,HOSTCC,$@)$(HOST_CC) $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=4096 -o $@ $< bsched/bsched.c -lcmocka
 ALL += $(BUILD)/tests/test_bsched_edges
 
-# A cmocka program's counts: $(call cmocka_counts,OUTPUT-VAR) sets p and f.
-cmocka_counts = p=$$(echo "$$$(1)" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	f=$$(echo "$$$(1)" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1)
-
 .PHONY: check-bsched-edges
 check-bsched-edges: $(BUILD)/tests/test_bsched_edges
 	@$(SETUP) base
-	@out=$$($< 2>&1); rc=$$?; echo "$$out"; $(call cmocka_counts,out); \
-	$(call record,bsched-edges,$${p:-0},$${f:-$$((rc != 0))}); [ $$rc -eq 0 ]
+	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-edges $<
 
 # ---------------------------------------------------------------- sanitizers
 # Every host unit suite again, built with ASan+UBSan into its own BUILD tree.
@@ -66,7 +61,7 @@ misra check-misra:
 	@$(SETUP) assure
 	@$(ASSURE_PY)/misra.py --deviations assure/misra-deviations.txt -I bsched --suite misra bsched; rc=$$?; \
 	echo "== other parts (counts only, no deviation list yet):"; \
-	for d in kernel drivers net pdl; do $(ASSURE_PY)/misra.py --count $(MISRA_INCLUDES) $$d; done; \
+	for d in kernel boards/robocube drivers net pdl; do $(ASSURE_PY)/misra.py --count $(MISRA_INCLUDES) $$d; done; \
 	exit $$rc
 
 # ---------------------------------------------------------------- static analysis
@@ -192,3 +187,12 @@ WP_MACHDEPS ?= x86_64 x86_32 x86_16
 prove-machdeps:
 	@$(SETUP) frama-c
 	@$(ASSURE_PY)/prove_machdeps.sh $(BUILD) $(WP_MACHDEPS)
+
+# ---------------------------------------------------------------- layering
+# Includes and Python imports between top-level folders point down only, with
+# no circle; the allowed graph is in assure/layering.py. About 1 s.
+CHECKS += layering
+.PHONY: check-layering
+check-layering:
+	@$(SETUP) base
+	@$(PYTHON) assure/layering.py --results $(RESULTS)/layering.txt

@@ -21,10 +21,8 @@ while IFS='|' read -r t src incs extra; do
     file -b "$exe" | grep -q 'MSB' || { echo "FAILED: $exe is not big-endian"; fail=$((fail + 1)); continue; }
     res=$(QEMU_LD_PREFIX=/usr/s390x-linux-gnu qemu-s390x -E LD_LIBRARY_PATH="$lib" "$exe" 2>&1); rc=$?
     echo "$res" | grep -E '^\[ *(PASSED|FAILED|  OK|==========)' | tail -3
-    p=$(echo "$res" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1)
-    f=$(echo "$res" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1)
-    [ -z "$p$f" ] && f=1
-    [ "$rc" -ne 0 ] && [ "${f:-0}" -eq 0 ] && f=1
+    read -r p f <<< "$(echo "$res" | ci/cmocka-suite --count)"
+    [ "$rc" -ne 0 ] && [ "$f" -eq 0 ] && f=1
     pass=$((pass + ${p:-0})); fail=$((fail + ${f:-0}))
     echo "$t on s390x ($(file -b "$exe" | cut -d, -f1-2)): ${p:-0} passed, ${f:-0} failed"
 done < <(assure/mutants.py tests)

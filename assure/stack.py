@@ -468,8 +468,8 @@ def main():
     ap.add_argument('--suite')
     a = ap.parse_args()
     headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h')) + \
-        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'drivers/*.h')) + \
-        glob.glob(os.path.join(ROOT, 'posix/include/*.h'))
+        glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'boards/robocube/*.h')) + \
+        glob.glob(os.path.join(ROOT, 'drivers/*.h')) + glob.glob(os.path.join(ROOT, 'posix/include/*.h'))
     ok = bad = known = at_risk = 0
     known_list = {}
     kp = os.path.join(ROOT, 'assure', 'stack-known.txt')
@@ -497,7 +497,7 @@ def main():
         linked = elf_functions(elf)
         sources = sorted(set(glob.glob(os.path.join(ROOT, 'apps', app, '*.c')) +
                              glob.glob(os.path.join(ROOT, 'kernel', '*.c')) +
-                             [f for d in ('drivers', 'net', 'pdl', 'posix')
+                             [f for d in ('boards/robocube', 'drivers', 'net', 'pdl', 'posix')
                               for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
         defs = c_defines(headers + sources + glob.glob(os.path.join(ROOT, 'apps', app, '*.h')))
         threads = find_threads(sources + headers, defs, linked)

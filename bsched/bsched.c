@@ -471,7 +471,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     s->cycle = 0u;
     s->reversed = 0u;
     s->ran_count = 0u;
-    /* ok_maxpv where s->maxpv was just written (at the end it took CVC4 16 s). */
+    /* ok_maxpv where s->maxpv was just written (at the end it is a slow goal). */
     /*@ assert maxpv_stored: s->maxpv == \at(max_pv(pv, count), Pre); */
     /*@ assert wf_sizes: 1 <= s->count <= BSCHED_MAX_PROCS && s->maxpv <= BSCHED_MAX_PV &&
             1 <= s->perfect <= s->count && s->cycle < pow2(s->maxpv); */
@@ -481,10 +481,10 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /* s->pv is a copy of pv, so the class layout of s->pv is that of pv. */
     /*@ assert pv_copied: \forall integer j; 0 <= j < n ==> (&s->pv[0])[j] == \at(pv[j], Pre); */
     /* The class layout of the copy: sizes, first slots and starts, one invariant
-     * each (together, same_first and same_start were one goal that CVC5 proved
-     * in 32 s under x86_64 and no prover proved under -machdep x86_32). The asserts
+     * each (together, same_first and same_start were one goal that only CVC5
+     * proved under x86_64 and no prover proved under -machdep x86_32). The asserts
      * in the second loop's body are the steps of same_start, class_start unfolded
-     * once on each side: without them its preservation took CVC5 31 s (CVC4 timed out). */
+     * once on each side: without them its preservation is slow (CVC4 times out). */
     /*@ ghost
       uint32_t m = 0u;
       int k = 0;
@@ -537,7 +537,7 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
     /*@ ghost lemma_wait_form(&s->pv[0], count); */
     /*@ assert same_wait: \forall integer j; 0 <= j < n ==>
             init_wait(&s->pv[0], count, j) == \at(init_wait(pv, count, j), Pre); */
-    /* order_pre again, here: with it, sorted_slots takes CVC4 2 s instead of 28-30 s. */
+    /* order_pre again, here: with it, sorted_slots is a quick goal instead of a slow one. */
     /*@ assert order_late: \forall integer d; 0 <= d < n ==>
             s->order[d] < n && \let x = s->order[d]; \at(sorted_pos(pv, count, x), Pre) == d; */
     /*@ assert sorted_slots: \forall integer d; 0 <= d < n ==>
@@ -546,8 +546,8 @@ int32_t bsched_init(struct bsched *s, const uint8_t *pv, size_t count)
             0 <= sorted_pos(&s->pv[0], count, j) < n && s->order[sorted_pos(&s->pv[0], count, j)] == j; */
     /*@ assert closed: \forall integer j; 0 <= j < n ==>
             s->offset[j] == init_wait(&s->pv[0], count, j); */
-    /* ok_closed_form in the ensures' own terms: with it the ensures takes CVC4 3 s
-     * (without: CVC5 15 s, CVC4 90 s). */
+    /* ok_closed_form in the ensures' own terms: with it the ensures is a quick goal
+     * (without it, a slow one). */
     /*@ assert closed_pre: \forall integer i; 0 <= i < count ==>
             s->offset[i] == \at(init_wait(pv, count, i), Pre); */
     /*@ ghost
@@ -897,8 +897,8 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ ghost size_t done0 = done; */
         to = collect_class(s, k, word, to) /*@ ghost (t, top, low, e * f, out, done) */;
         /* order[] after the call, said once: the preserved `kept_order` and the
-         * postcondition `kept` then follow at once (they took CVC4 74 s and 44 s;
-         * this assertion takes it 35-45 s, the frame of the call among this
+         * postcondition `kept` then follow at once (each was slow on its own;
+         * this assertion pays the cost once, the frame of the call among this
          * loop's hypotheses). */
         /*@ assert order_kept: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre); */
         /*@ ghost done = (size_t)(to - out); */
@@ -924,7 +924,7 @@ static uint32_t collect_due(const struct bsched *s, uint32_t reversed, uint16_t 
         /*@ ghost gap = gap - 1; */
     } while (k <= maxpv);
     /* The postcondition `kept` as the loop leaves it, before the asserts about
-     * the due set crowd the context (without it, CVC4 took 13 s on `kept`). */
+     * the due set crowd the context (without it, `kept` is a slow goal). */
     /*@ assert kept_exit: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre) &&
             (\forall integer d; 0 <= d < BSCHED_MAX_PROCS ==> s->order[d] == \at(s->order[d], Pre)) &&
             (\forall integer j; 0 <= j <= BSCHED_MAX_PV ==>
@@ -1062,8 +1062,8 @@ int32_t bsched_step(struct bsched *s)
             ((\exists integer j; 0 <= j < done && s->ran[j] == i) <==> t % pow2(s->pv[i]) == s->offset[i]); */
     /*@ assert sizes_same: s->count == \at(s->count, Pre) && s->perfect == \at(s->perfect, Pre); */
     /* order[] shares its memory type with ran[] and ran_count: said once, the
-     * goals about the state as a whole need not each show it (sorted_same took
-     * CVC4 13 s without it). */
+     * goals about the state as a whole need not each show it (sorted_same is
+     * slow without it). */
     /*@ assert order_same: \forall integer d; 0 <= d < BSCHED_MAX_PROCS ==>
             s->order[d] == \at(s->order[d], Pre); */
     /*@ assert wf_kept: well_formed(s); */

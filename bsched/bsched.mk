@@ -25,27 +25,18 @@ check-bsched-build:
 	@pass=0; fail=0; \
 	for cfg in "$(HOST_CC) $(HOST_CFLAGS)" "$(HOST_CC) $(HOST_CFLAGS) -DBSCHED_MAX_PROCS=65535" \
 	           "$(CROSS_CC) $(CROSS_CFLAGS)" "$(CROSS_CC) $(CROSS_CFLAGS) -DBSCHED_MAX_PROCS=65535"; do \
-	    for src in bsched/bsched.c bsched/ref/bsched_fig7.c; do \
+	    for src in bsched/bsched.c bsched/proofs/ref/bsched_fig7.c; do \
 	        if $$cfg -Ibsched -c -o /dev/null $$src; then pass=$$((pass+1)); echo "ok: $$cfg $$src"; \
 	        else fail=$$((fail+1)); echo "FAILED: $$cfg $$src"; fi; \
 	    done; \
 	done; \
 	$(call record,bsched-build,$$pass,$$fail)
 
-# $(call cmocka_suite,SUITE,BINARY): runs a cmocka binary and records its counts.
-cmocka_suite = out=$$($(2) 2>&1); rc=$$?; echo "$$out"; \
-	p=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	f=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	$(call record,$(1),$${p:-0},$${f:-0}); [ $$rc -eq 0 ]
-
 check-bsched-unit: $(BUILD)/tests/test_bsched
 	@$(SETUP) base
-	@$(call cmocka_suite,bsched-unit,$(BUILD)/tests/test_bsched)
+	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-unit $(BUILD)/tests/test_bsched
 
 check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
 
-include bsched/ref/ref.mk
-include bsched/bench/bench.mk
-include bsched/dist/dist.mk

@@ -1,7 +1,7 @@
 /* The shared start-up of the firmware images; see board.h. */
 #include "drivers/board.h"
 
-#include "cpu.h"
+#include "kernel/arch/cpu32/cpu.h"
 #include "k_board.h"
 #include "kernel/lib/kstring.h"
 #include "drivers/led.h"

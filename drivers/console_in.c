@@ -3,9 +3,9 @@
 
 #include "kernel.h"
 #include "drivers/drv_err.h"
-#include "drivers/duart.h"
+#include "boards/robocube/duart.h"
 #include "drivers/line_edit.h"
-#include "drivers/mc68681.h"
+#include "boards/robocube/mc68681.h"
 
 #define SR_ERRORS 0xF0u            /* received break, framing, parity, overrun */
 

@@ -2,7 +2,7 @@
  * Interrupt-driven console input on DUART channel B (the console's receiver;
  * output is the kernel's console in k_board_robocube.c).
  *
- * The RxRDYB interrupt (attached through drivers/duart.h) moves received
+ * The RxRDYB interrupt (attached through boards/robocube/duart.h) moves received
  * bytes into a ring; a reading thread waits on a semaphore with a bounded
  * timeout. When the ring is full the interrupt masks itself and leaves the
  * bytes in the DUART's receive FIFO until the reader has made room, so a

@@ -4,7 +4,8 @@
 #   make check-drivers-unit     cmocka: I2C state machine vs a scripted fake
 #                               controller; analog numbering and range checks
 #   make check-drivers-target   apps/iotest on qemu -M robocube, driven over
-#                               the console and QMP (drivers/tests/target)
+#                               the console and QMP (drivers/tests/target;
+#                               declared with the image, apps/iotest/app.mk)
 #   make drivers-size           text/data/bss of the I/O drivers (CPU32, -Os)
 
 DRV_BUILD := $(BUILD)/drivers
@@ -13,10 +14,10 @@ DRV_IO_SRCS := drivers/i2c.c drivers/i2c_fsm.c drivers/analog.c drivers/bio.c dr
                drivers/fastout.c drivers/sampler.c drivers/board_io.c
 
 ALL += $(DRV_HOST_TESTS)
-CHECKS += drivers-unit drivers-target
+CHECKS += drivers-unit
 HOST_UNIT_CHECKS += drivers-unit
 
-.PHONY: check-drivers-unit check-drivers-target drivers-size
+.PHONY: check-drivers-unit drivers-size
 
 $(DRV_BUILD)/tests/test_i2c_fsm: drivers/tests/host/test_i2c_fsm.c drivers/i2c_fsm.c drivers/i2c_fsm.h drivers/i2c.h
 	@mkdir -p $(@D)
@@ -29,12 +30,6 @@ $(DRV_BUILD)/tests/test_analog: drivers/tests/host/test_analog.c drivers/analog.
 check-drivers-unit: $(DRV_HOST_TESTS)
 	@$(SETUP) base
 	@RESULTS=$(RESULTS) ci/cmocka-suite drivers-unit $(DRV_HOST_TESTS)
-
-check-drivers-target:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=iotest
-	@BSCHED_QEMU=$(QEMU_M68K) IOTEST_ELF=$(call app_elf,iotest) FW_ICOUNT=$(FW_ICOUNT) \
-	    ci/pytest-suite drivers-target drivers/tests/target
 
 # Size of the I/O drivers as linked into the iotest image (archive members).
 drivers-size: $(BUILD)/firmware/iotest/iotest.elf

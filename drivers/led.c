@@ -1,7 +1,7 @@
 /* Status LED on port E bit 3; see led.h. */
 #include "led.h"
 
-#include "mc68332.h"
+#include "boards/robocube/mc68332.h"
 
 #define LED_BIT 0x08u /* PE3 */
 

@@ -37,7 +37,7 @@ int getpid(void);
 void _exit(int status) __attribute__((noreturn));
 
 /* The heap: from the end of .bss up to the room the linker script keeps for
- * the supervisor stack (kernel/arch/cpu32/robocube.ld). */
+ * the supervisor stack (boards/robocube/robocube.ld). */
 extern char __bss_end[], __stack_top[], __stack_size[];
 static char *heap_end;
 

@@ -1,16 +1,17 @@
 # The motion drivers (drivers/tpu.c, motor.c, motor_pi.c, odometry.c):
 #   make check-motion-unit     host cmocka tests: PI controller, odometry
 #   make check-motion-target   apps/motiontest on the emulated board, checked over QMP
+#                              (declared with the image, apps/motiontest/app.mk)
 #   make motion-size           text/data/bss of the motion drivers for CPU32 (-Os)
 
 MOTION_BUILD      := $(BUILD)/motion
 MOTION_UNIT_TESTS := $(MOTION_BUILD)/test_motor_pi $(MOTION_BUILD)/test_odometry
 MOTION_SRCS       := drivers/tpu.c drivers/motor.c drivers/motor_pi.c drivers/odometry.c
 
-CHECKS += motion-unit motion-target
+CHECKS += motion-unit
 HOST_UNIT_CHECKS += motion-unit
 
-.PHONY: motion-unit-tests check-motion-unit check-motion-target motion-size
+.PHONY: motion-unit-tests check-motion-unit motion-size
 motion-unit-tests: $(MOTION_UNIT_TESTS)
 ALL += $(MOTION_UNIT_TESTS)
 
@@ -26,12 +27,6 @@ $(MOTION_BUILD)/test_odometry: drivers/tests/test_odometry.c drivers/odometry.c 
 check-motion-unit: $(MOTION_UNIT_TESTS)
 	@$(SETUP) base
 	@RESULTS=$(RESULTS) ci/cmocka-suite motion-unit $(MOTION_UNIT_TESTS)
-
-check-motion-target:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=motiontest
-	@BSCHED_QEMU=$(QEMU_M68K) MOTION_ELF=$(call app_elf,motiontest) FW_ICOUNT=$(FW_ICOUNT) \
-	    ci/pytest-suite motion-target drivers/tests/target_motion
 
 motion-size:
 	@$(MAKE) --no-print-directory firmware APP=motiontest

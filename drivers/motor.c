@@ -25,7 +25,7 @@
 
 #include "kernel.h"
 #include "drivers/drv_err.h"
-#include "drivers/duart.h"
+#include "boards/robocube/duart.h"
 #include "drivers/motor.h"
 #include "drivers/motor_pi.h"
 #include "drivers/tpu.h"

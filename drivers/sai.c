@@ -10,17 +10,74 @@
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 
+/* A driver's int result: a value (>= 0) into *value, or its error. */
+static int take(int rc, int32_t *value)
+{
+    if (rc < 0)
+        return rc;
+    *value = rc;
+    return DRV_OK;
+}
+
+/* ---- each kind's read and write (the last columns of sai_ports.h) ---- */
+static int sai_port_analog_read(unsigned i, int32_t *v) { return take(analog_read(i), v); }
+static int sai_port_analog_write(unsigned i, int32_t v) { return analog_write(i, (int)v); }
+static int sai_port_bio_read(unsigned i, int32_t *v) { return take(bio_read(i), v); }
+static int sai_port_bio_write(unsigned i, int32_t v) { return bio_write(i, (int)v); }
+static int sai_port_binin_read(unsigned i, int32_t *v) { return take(binin_read(i), v); }
+static int sai_port_fastout_read(unsigned i, int32_t *v)
+{
+    *v = (int32_t)((fastout_get() >> i) & 1u);
+    return DRV_OK;
+}
+static int sai_port_fastout_write(unsigned i, int32_t v) { return fastout_write(i, (int)v); }
+static int sai_port_pwm_read(unsigned i, int32_t *v)
+{
+    int permille, rc = tpu_pwm_get(i, NULL, &permille);
+    if (rc < 0)
+        return rc;
+    *v = permille;
+    return DRV_OK;
+}
+/* 0: keep the channel's frequency (TPU_PWM_HZ_DEFAULT for a channel that ran no PWM). */
+static int sai_port_pwm_write(unsigned i, int32_t v) { return tpu_pwm(i, 0, (int)v); }
+static int sai_port_motor_read(unsigned i, int32_t *v)
+{
+    int permille, rc = motor_power(i, &permille);
+    if (rc < 0)
+        return rc;
+    *v = permille;
+    return DRV_OK;
+}
+static int sai_port_motor_write(unsigned i, int32_t v) { return motor_set(i, (int)v); }
+static int sai_port_encoder_read(unsigned i, int32_t *v)
+{
+    int32_t counts;
+    int rc = motor_position(i, &counts);
+    if (rc < 0)
+        return rc;     /* *v untouched on error */
+    *v = counts;
+    return DRV_OK;
+}
+static int sai_port_led_read(unsigned i, int32_t *v)
+{
+    (void)i;
+    *v = led_is_on() ? 1 : 0;
+    return DRV_OK;
+}
+static int sai_port_led_write(unsigned i, int32_t v)
+{
+    (void)i;
+    led_set(v != 0);
+    return DRV_OK;
+}
+
+#define SAI_KIND_ROW(kind, name, short_name, first, last, rd, wr, min, max, unit, read, write) \
+    [kind] = {name, short_name, first, last, rd, wr, min, max, unit, read, write},
 static const struct sai_kind_info kinds[SAI_KIND_COUNT] = {
-    [SAI_ANALOG_IN]  = {"analog in", "ad", 0, ANALOG_INPUTS - 1u, 1, 0, 0, 255, ""},
-    [SAI_ANALOG_OUT] = {"analog out", "da", 0, ANALOG_OUTPUTS - 1u, 0, 1, 0, 255, ""},
-    [SAI_BINARY_IO]  = {"binary io", "bio", 0, BIO_LINES - 1u, 1, 1, 0, 1, ""},
-    [SAI_BINARY_IN]  = {"binary in", "bin", BININ_FIRST, BININ_LAST, 1, 0, 0, 1, ""},
-    [SAI_FAST_OUT]   = {"fast out", "fast", 0, FASTOUT_BITS - 1u, 1, 1, 0, 1, ""},
-    [SAI_PWM]        = {"pwm", "pwm", 0, TPU_CHANNELS - 1u, 1, 1, 0, 1000, "per-mille"},
-    [SAI_MOTOR]      = {"motor", "motor", 0, MOTOR_COUNT - 1u, 1, 1, -1000, 1000, "per-mille"},
-    [SAI_ENCODER]    = {"encoder", "enc", 0, MOTOR_COUNT - 1u, 1, 0, INT32_MIN, INT32_MAX, "counts"},
-    [SAI_LED]        = {"led", "led", 0, 0, 1, 1, 0, 1, ""},
+    SAI_PORT_TABLE(SAI_KIND_ROW)
 };
+#undef SAI_KIND_ROW
 
 const struct sai_kind_info *sai_kind_info(unsigned kind)
 {
@@ -191,90 +248,24 @@ int sai_name(struct sai_channel ch, char *buf, size_t size)
     return (int)len;
 }
 
-/* A driver's int result: a value (>= 0) into *value, or its error. */
-static int take(int rc, int32_t *value)
-{
-    if (rc < 0)
-        return rc;
-    *value = rc;
-    return DRV_OK;
-}
-
 int sai_read(struct sai_channel ch, int32_t *value)
 {
-    int rc, permille;
-    int32_t counts;
     if (value == NULL)
         return DRV_ERR_PARAM;
     if (sai_check(ch) != DRV_OK)
         return DRV_ERR_CHANNEL;
-    if (!kinds[ch.kind].readable)
+    if (!kinds[ch.kind].readable || kinds[ch.kind].read == NULL)
         return DRV_ERR_PARAM;
-    switch (ch.kind) {
-    case SAI_ANALOG_IN:
-        return take(analog_read(ch.index), value);
-    case SAI_BINARY_IO:
-        return take(bio_read(ch.index), value);
-    case SAI_BINARY_IN:
-        return take(binin_read(ch.index), value);
-    case SAI_FAST_OUT:
-        *value = (int32_t)((fastout_get() >> ch.index) & 1u);
-        return DRV_OK;
-    case SAI_PWM:
-        rc = tpu_pwm_get(ch.index, NULL, &permille);
-        if (rc < 0)
-            return rc;
-        *value = permille;
-        return DRV_OK;
-    case SAI_MOTOR:
-        rc = motor_power(ch.index, &permille);
-        if (rc < 0)
-            return rc;
-        *value = permille;
-        return DRV_OK;
-    case SAI_ENCODER:
-        rc = motor_position(ch.index, &counts);
-        if (rc < 0)
-            return rc;
-        *value = counts;
-        return DRV_OK;
-    case SAI_LED:
-        *value = led_is_on() ? 1 : 0;
-        return DRV_OK;
-    default:
-        return DRV_ERR_PARAM;
-    }
+    return kinds[ch.kind].read(ch.index, value);
 }
 
 int sai_write(struct sai_channel ch, int32_t value)
 {
     int rc = sai_check_value(ch, value);
-    int v = (int)value;
     if (rc != DRV_OK)
         return rc;
-    switch (ch.kind) {
-    case SAI_ANALOG_OUT:
-        rc = analog_write(ch.index, v);
-        break;
-    case SAI_BINARY_IO:
-        rc = bio_write(ch.index, v);
-        break;
-    case SAI_FAST_OUT:
-        rc = fastout_write(ch.index, v);
-        break;
-    case SAI_PWM:
-        rc = tpu_pwm(ch.index, 0, v); /* 0: keep the channel's frequency */
-        break;
-    case SAI_MOTOR:
-        rc = motor_set(ch.index, v);
-        break;
-    case SAI_LED:
-        led_set(v != 0);
-        rc = DRV_OK;
-        break;
-    default:
-        rc = DRV_ERR_PARAM;
-        break;
-    }
+    if (kinds[ch.kind].write == NULL)
+        return DRV_ERR_PARAM;
+    rc = kinds[ch.kind].write(ch.index, value);
     return rc < 0 ? rc : DRV_OK;
 }

@@ -1,7 +1,8 @@
 /*
  * The uniform access layer (in the spirit of CubeOS' SAI, facts 3.5): every
  * port of the RoboCube is a channel, named by its kind and a number, and
- * sai_read / sai_write work on any channel by dispatching to its driver.
+ * sai_read / sai_write work on any channel by dispatching to its driver
+ * through the port table (sai_ports.h, which PDL uses too):
  *
  *   kind         short   numbers  read                      write
  *   analog in    ad      0..23    0..255 (PCF8591 input)    -
@@ -33,18 +34,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-enum sai_kind {
-    SAI_ANALOG_IN = 0,
-    SAI_ANALOG_OUT,
-    SAI_BINARY_IO,
-    SAI_BINARY_IN,
-    SAI_FAST_OUT,
-    SAI_PWM,
-    SAI_MOTOR,
-    SAI_ENCODER,
-    SAI_LED,
-    SAI_KIND_COUNT
-};
+#include "drivers/sai_ports.h"   /* enum sai_kind and the table */
 
 struct sai_channel {
     uint8_t kind;   /* enum sai_kind */
@@ -59,6 +49,10 @@ struct sai_kind_info {
     uint8_t readable, writable;
     int32_t min, max;       /* write range (read range for read-only kinds) */
     const char *unit;       /* "", "per-mille", "counts" */
+    /* The driver calls (NULL where the kind has no such direction): DRV_OK
+     * or the driver's error; index and value already checked. */
+    int (*read)(unsigned index, int32_t *value);
+    int (*write)(unsigned index, int32_t value);
 };
 /* NULL for a kind >= SAI_KIND_COUNT. */
 const struct sai_kind_info *sai_kind_info(unsigned kind);

@@ -1,8 +1,37 @@
-/* The kernel's console printf and snprintf, on the firmware's formatter
- * (kernel/lib/kprintf.c, freestanding, no libc). */
+/* The kernel's console (the writer a board registers), printf and snprintf,
+ * on the firmware's formatter (kernel/lib/kprintf.c, freestanding, no libc). */
 #include <stdarg.h>
 #include "kernel.h"
 #include "kernel/lib/kprintf.h"
+
+/* The registered console (k_console_register); none until a board registers one. */
+static k_console_write_fn k_console_writer;
+static k_console_sync_fn k_console_sync_writer;
+
+void k_console_register(k_console_write_fn write, k_console_sync_fn write_sync)
+{
+    k_console_writer = write;
+    k_console_sync_writer = write_sync;
+}
+
+size_t k_console_write(const char *s, size_t len)
+{
+    k_console_write_fn w = k_console_writer;
+    k_console_sync_fn ws = k_console_sync_writer;
+    if (w != NULL)
+        return w(s, len);
+    if (ws == NULL)
+        return 0u;
+    ws(s, len);
+    return len;
+}
+
+void k_console_write_sync(const char *s, size_t len)
+{
+    k_console_sync_fn ws = k_console_sync_writer;
+    if (ws != NULL)
+        ws(s, len);
+}
 
 int k_vformat(k_putc_fn out, void *ctx, const char *fmt, va_list ap)
 {

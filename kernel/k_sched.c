@@ -176,6 +176,11 @@ int k_in_isr(void)
     return k_kernel.isr_nesting != 0;
 }
 
+int k_can_block(void)
+{
+    return k_kernel.started && k_kernel.isr_nesting == 0;
+}
+
 void k_isr_enter(void)
 {
     k_kernel.isr_nesting++;

@@ -84,6 +84,11 @@ int k_sem_getvalue(struct k_sem *s, int32_t *value)
     return K_OK;
 }
 
+int k_sem_has_waiter(const struct k_sem *s)
+{
+    return s != NULL && k_waitq_first(&s->wq) != NULL;
+}
+
 /* ---- mutexes ---- */
 
 int k_mutex_init(struct k_mutex *m)

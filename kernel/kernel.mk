@@ -44,10 +44,11 @@ K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -fno-sto
                   -fdata-sections -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
                   -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched -I$(ROOT) \
                   -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -MMD -MP
-# Everything of the kernel a CPU32 image links (with the firmware base objects);
-# every firmware image (apps/apps.mk) builds the same list at its own tick rate.
+# Everything of the kernel a CPU32 image links (with the firmware base objects),
+# and the board's support for it (boards/robocube/board.mk); every firmware
+# image (apps/apps.mk) builds the same list at its own tick rate.
 K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c kernel/arch/cpu32/switch.S \
-                 drivers/k_board_robocube.c
+                 $(BOARD_KERNEL_SRCS)
 K_TARGET_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(K_TARGET_SRCS))
 # Test modes of kernel/tests/target-kernel/ktest.c (KTEST_MODE = position).
 K_TEST_MODES := preempt priority semaphore inherit queue drift overrun stackguard baduse measure \

@@ -120,7 +120,6 @@ MESSAGES ?= 5
 LOSS     ?= 0.1
 CORRUPT  ?= 0.1
 BYTE_ERRORS ?= 0
-SEED     ?= 1
 FEC      ?= 0
 NET_SOAK_USAGE := make net-soak [BOARDS=1..4] [HOSTS=0..8] [MESSAGES=1..10000] [LOSS=P] [CORRUPT=P] [BYTE_ERRORS=P] [SEED=0..4294967295] [FEC=0|1] (P: 0..1)
 # Checked before anything is built: one line and status 2 for a bad value.

@@ -1,8 +1,8 @@
 /* BiM-433 radio driver on DUART channel A; see radio.h. */
 #include "radio.h"
-#include "drivers/duart.h"
-#include "drivers/duart_console.h"
-#include "drivers/mc68681.h"
+#include "boards/robocube/duart.h"
+#include "boards/robocube/duart_console.h"
+#include "boards/robocube/mc68681.h"
 
 #define RADIO_OP_RX 0x01u     /* OP0 */
 #define RADIO_OP_TX 0x02u     /* OP1 */

@@ -1,7 +1,7 @@
 /*
  * The BiM-433 radio on DUART channel A (facts 4.2): interrupt-driven, no
  * polling and no busy transmit. OP0 = RX select, OP1 = TX select (through
- * drivers/duart.h, which owns OPR), IP0 = carrier detect (low = carrier).
+ * boards/robocube/duart.h, which owns OPR), IP0 = carrier detect (low = carrier).
  *
  * Receive: the RxRDYA interrupt feeds every character to the frame state
  * machine (frame.h); good frames go into a ring of RADIO_RX_FRAMES and the

@@ -10,9 +10,11 @@
 PDL_BUILD      := $(BUILD)/pdl
 # The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
 # the host platform in pdl/host/.
-PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c
+PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c
 PDL_HOST_SRCS  := $(PDL_CORE_SRCS) pdl/host/pdl_host.c bsched/bsched.c
-PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h
+# The port table (pdl_bind.c's port ranges) and the driver headers it reads.
+PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h drivers/sai_ports.h \
+                  drivers/analog.h drivers/binin.h drivers/bio.h drivers/fastout.h drivers/motor.h drivers/tpu.h
 PDL_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/bsched
 # The example behaviours (compiled for the host here and into apps/pdl_demo for the board).
 PDL_EXAMPLE_SRCS := $(wildcard pdl/examples/*.c)
@@ -76,10 +78,8 @@ check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 	if $(PDL_README_TEST); then p=1; else f=1; rc=1; fi; \
 	for t in $(PDL_HOST_TESTS); do \
 	    out=$$($$t 2>&1); r=$$?; echo "$$out"; [ $$r -eq 0 ] || rc=1; \
-	    tp=$$(echo "$$out" | sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    tf=$$(echo "$$out" | sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' | tail -1); \
-	    if [ -z "$$tp$$tf" ]; then tf=1; fi; \
-	    p=$$((p + $${tp:-0})); f=$$((f + $${tf:-0})); \
+	    read -r tp tf <<< "$$(echo "$$out" | ci/cmocka-suite --count)"; \
+	    p=$$((p + tp)); f=$$((f + tf)); \
 	done; \
 	for src in $(PDL_REFUSE_SRCS); do \
 	    want=$$(sed -n '1s|^// expect: ||p' $$src); \

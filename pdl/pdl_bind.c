@@ -12,25 +12,35 @@
  * host/pdl_host.c: arrays a test or a simulator fills and reads).
  */
 #include "pdl/pdl_internal.h"
+#include "drivers/sai_ports.h"
 
-/* Index range, direction and value range of every port. */
+/* Every PDL port is a kind of the board's port table (drivers/sai_ports.h)
+ * in one direction: its numbers and value range are that kind's. */
 struct pdl_port_info {
     uint8_t first, last;
     uint8_t output;
+    uint8_t kind;       /* enum sai_kind */
     int32_t lo, hi;
 };
 
+#define PDL_PORT_OF(kind, output) {kind##_FIRST, kind##_LAST, output, kind, kind##_MIN, kind##_MAX}
 static const struct pdl_port_info pdl_port_table[PDL_PORT_END] = {
-    [PDL_ANALOG_IN]  = {0, 23, 0, 0, 255},
-    [PDL_BINARY_IN]  = {1, 5, 0, 0, 1},
-    [PDL_BIO_IN]     = {0, 15, 0, 0, 1},
-    [PDL_MOTOR]      = {0, 2, 1, -1000, 1000},
-    [PDL_ANALOG_OUT] = {0, 5, 1, 0, 255},
-    [PDL_BIO_OUT]    = {0, 15, 1, 0, 1},
-    [PDL_FAST_OUT]   = {0, 15, 1, 0, 1},
-    [PDL_PWM]        = {0, 15, 1, 0, 1000},
-    [PDL_LED]        = {0, 0, 1, 0, 1},
+    [PDL_ANALOG_IN]  = PDL_PORT_OF(SAI_ANALOG_IN, 0),
+    [PDL_BINARY_IN]  = PDL_PORT_OF(SAI_BINARY_IN, 0),
+    [PDL_BIO_IN]     = PDL_PORT_OF(SAI_BINARY_IO, 0),
+    [PDL_MOTOR]      = PDL_PORT_OF(SAI_MOTOR, 1),
+    [PDL_ANALOG_OUT] = PDL_PORT_OF(SAI_ANALOG_OUT, 1),
+    [PDL_BIO_OUT]    = PDL_PORT_OF(SAI_BINARY_IO, 1),
+    [PDL_FAST_OUT]   = PDL_PORT_OF(SAI_FAST_OUT, 1),
+    [PDL_PWM]        = PDL_PORT_OF(SAI_PWM, 1),
+    [PDL_LED]        = PDL_PORT_OF(SAI_LED, 1),
 };
+#undef PDL_PORT_OF
+
+int pdl_port_kind(enum pdl_port port)
+{
+    return (int)port > 0 && port < PDL_PORT_END ? pdl_port_table[port].kind : -1;
+}
 
 struct pdl_bound {
     struct pdl_head *q;

@@ -14,9 +14,9 @@
  * counted by the kernel thread and reported on the console by its reporter
  * thread; pdl_get_stats() returns them.
  *
- * A port whose driver is not in the tree is
- * refused when run_pdl() starts (PDL_ERR_DRIVER, reported), so an image
- * without it still builds and runs programs that do not use that port.
+ * Actuators are written through the board's port table (drivers/sai_ports.h),
+ * the same as the uniform access layer's (drivers/sai.c); run_pdl() brings up
+ * the drivers the bindings use.
  */
 #include "pdl/pdl_internal.h"
 
@@ -26,33 +26,11 @@
 #include "drivers/led.h"
 #include "pdl/pdl_board.h"
 
-#if defined(__has_include)
-#if __has_include("drivers/sampler.h")
+#include "drivers/sai.h"
 #include "drivers/sampler.h"
 #include "drivers/board_io.h"
-#define PDL_HAVE_SAMPLER 1
-#endif
-#if __has_include("drivers/motor.h")
 #include "drivers/motor.h"
-#define PDL_HAVE_MOTOR 1
-#endif
-#if __has_include("drivers/analog.h")
-#include "drivers/analog.h"
-#define PDL_HAVE_ANALOG 1
-#endif
-#if __has_include("drivers/bio.h")
-#include "drivers/bio.h"
-#define PDL_HAVE_BIO 1
-#endif
-#if __has_include("drivers/fastout.h")
-#include "drivers/fastout.h"
-#define PDL_HAVE_FASTOUT 1
-#endif
-#if __has_include("drivers/tpu.h")
 #include "drivers/tpu.h"
-#define PDL_HAVE_TPU 1
-#endif
-#endif
 
 #ifndef PDL_STACK_BYTES
 #define PDL_STACK_BYTES 2048u
@@ -87,7 +65,6 @@ static uint32_t pdl_ticks_to_us(k_ticks_t t)
 /* ---- ports ---- */
 void pdl_platform_read_inputs(struct pdl_inputs *in)
 {
-#ifdef PDL_HAVE_SAMPLER
     struct sensor_snapshot snap;
     unsigned i;
     sampler_read(&snap);
@@ -96,63 +73,16 @@ void pdl_platform_read_inputs(struct pdl_inputs *in)
     in->bio = snap.bio;
     in->binin = (uint8_t)(snap.binin << 1);     /* the sampler has IP1 in bit 0 */
     in->valid = snap.seq == 0u ? 0u : snap.valid;
-#else
-    *in = (struct pdl_inputs){{0}, 0, 0, 0};   /* refused at run_pdl: never reached */
-#endif
 }
 
+/* Through the board's port table (drivers/sai_ports.h): the driver's result.
+ * Index and value are in the port's range (pdl_bind.c checked and clipped). */
 int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v)
 {
-    (void)index;    /* unused when no indexed driver is in the image */
-    switch (port) {
-#ifdef PDL_HAVE_MOTOR
-    case PDL_MOTOR: return motor_set(index, (int)v);
-#endif
-#ifdef PDL_HAVE_ANALOG
-    case PDL_ANALOG_OUT: return analog_write(index, (int)v);
-#endif
-#ifdef PDL_HAVE_BIO
-    case PDL_BIO_OUT: return bio_write(index, (int)v);
-#endif
-#ifdef PDL_HAVE_FASTOUT
-    case PDL_FAST_OUT: return fastout_write(index, (int)v);
-#endif
-#ifdef PDL_HAVE_TPU
-    case PDL_PWM: return tpu_pwm(index, PDL_PWM_HZ, (int)v);
-#endif
-    case PDL_LED:
-        led_set(v != 0);
-        return 0;
-    default:
+    const struct sai_kind_info *k = sai_kind_info((unsigned)pdl_port_kind(port));
+    if (k == NULL || k->write == NULL)
         return PDL_ERR_DRIVER;
-    }
-}
-
-/* Is the driver of `port` in this image? */
-static int pdl_port_available(enum pdl_port port)
-{
-    switch (port) {
-#ifdef PDL_HAVE_SAMPLER
-    case PDL_ANALOG_IN: case PDL_BINARY_IN: case PDL_BIO_IN: return 1;
-#endif
-#ifdef PDL_HAVE_MOTOR
-    case PDL_MOTOR: return 1;
-#endif
-#ifdef PDL_HAVE_ANALOG
-    case PDL_ANALOG_OUT: return 1;
-#endif
-#ifdef PDL_HAVE_BIO
-    case PDL_BIO_OUT: return 1;
-#endif
-#ifdef PDL_HAVE_FASTOUT
-    case PDL_FAST_OUT: return 1;
-#endif
-#ifdef PDL_HAVE_TPU
-    case PDL_PWM: return 1;
-#endif
-    case PDL_LED: return 1;
-    default: return 0;
-    }
+    return k->write(index, v);
 }
 
 static int pdl_driver_failed(int code, const char *what)
@@ -167,13 +97,7 @@ static int pdl_driver_failed(int code, const char *what)
 int pdl_platform_start_ports(void)
 {
     static int io_up, sampler_up, motors_up, tpu_up;
-    int p, r;
-    for (p = PDL_ANALOG_IN; p < PDL_PORT_END; p++) {
-        if (pdl_bind_uses((enum pdl_port)p) && !pdl_port_available((enum pdl_port)p))
-            return pdl_driver_failed(0, "run_pdl: a bound port's driver is not in this image");
-    }
-    r = 0;
-#ifdef PDL_HAVE_SAMPLER
+    int r;
     if (!io_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
                    pdl_bind_uses(PDL_BIO_IN) || pdl_bind_uses(PDL_ANALOG_OUT) ||
                    pdl_bind_uses(PDL_BIO_OUT) || pdl_bind_uses(PDL_FAST_OUT))) {
@@ -189,27 +113,18 @@ int pdl_platform_start_ports(void)
             return pdl_driver_failed(r, "run_pdl: sampler_start");
         sampler_up = 1;
     }
-#endif
-#ifdef PDL_HAVE_MOTOR
     if (!motors_up && pdl_bind_uses(PDL_MOTOR)) {
         r = motor_init();
         if (r < 0)
             return pdl_driver_failed(r, "run_pdl: motor_init");
         motors_up = 1;
     }
-#endif
-#ifdef PDL_HAVE_TPU
     if (!tpu_up && pdl_bind_uses(PDL_PWM)) {
         r = tpu_init();
         if (r < 0)
             return pdl_driver_failed(r, "run_pdl: tpu_init");
         tpu_up = 1;
     }
-#endif
-    (void)io_up;
-    (void)sampler_up;
-    (void)motors_up;
-    (void)tpu_up;
     return PDL_OK;
 }
 

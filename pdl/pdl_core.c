@@ -1,7 +1,9 @@
 /*
  * The PDL runtime core, the same on the board and on the host: the tables
  * of processes and quantities, the cycle (begin, due processes through the
- * unchanged bsched.c, commit), dt, and the refusal of misuse.
+ * unchanged bsched.c, commit) and dt. It drives the binding table
+ * (pdl_bind.c) each cycle; both count and report misuse through
+ * pdl_state.c, below them, so neither calls the other back.
  *
  * Commit: add_value puts a quantity on the commit list the first time it
  * gets a contribution in a cycle, so the end of a cycle costs one step per
@@ -22,8 +24,6 @@
 #if PDL_MAX_QUANTITIES > 65535
 #error "PDL_MAX_QUANTITIES must fit a uint16_t id"
 #endif
-
-struct pdl_stats pdl_stats;
 
 static struct bsched pdl_sched;
 static pdl_process_fn pdl_procs[PDL_MAX_PROCESSES];
@@ -53,7 +53,6 @@ static uint32_t pdl_plan_t;         /* next minor cycle to replay */
 static int pdl_plan_cached;
 int pdl_plan_cache_enabled = 1;
 
-static int pdl_started;
 static int pdl_current = -1;        /* process running now, or -1 */
 static uint32_t pdl_cycle_start_us;
 static uint32_t pdl_dt_us;
@@ -61,43 +60,6 @@ static uint32_t pdl_cycle_count_begun;
 
 /* Set by the platform (pdl_set_frequency). */
 uint32_t pdl_core_period_us = 1000000u / PDL_DEFAULT_HZ;
-
-int pdl_refuse(int code, const char *what)
-{
-    pdl_stats.misuse++;
-    pdl_stats.last_error = code;
-    pdl_platform_report(code, what);
-    return code;
-}
-
-const char *pdl_strerror(int code)
-{
-    switch (code) {
-    case PDL_OK: return "ok";
-    case PDL_ERR_NULL: return "NULL quantity or process";
-    case PDL_ERR_RUNNING: return "not allowed after run_pdl()";
-    case PDL_ERR_TOO_MANY_PROCESSES: return "too many processes";
-    case PDL_ERR_TOO_MANY_QUANTITIES: return "too many quantities";
-    case PDL_ERR_PV_RANGE: return "priority value out of range";
-    case PDL_ERR_BOUNDS: return "min > max, or initial value outside [min, max]";
-    case PDL_ERR_TWICE: return "quantity declared or bound twice";
-    case PDL_ERR_UNDECLARED: return "quantity not declared";
-    case PDL_ERR_NO_PROCESSES: return "no process";
-    case PDL_ERR_PORT: return "no such port for this direction";
-    case PDL_ERR_PORT_TAKEN: return "output already bound";
-    case PDL_ERR_FREQUENCY: return "cycle frequency out of range";
-    case PDL_ERR_NOT_RUNNING: return "run_pdl() not called";
-    case PDL_ERR_DRIVER: return "driver error";
-    case PDL_ERR_KERNEL: return "kernel refused the cycle thread";
-    case PDL_ERR_OUTSIDE_PROCESS: return "add_value outside a process";
-    case PDL_ERR_TOO_MANY_BINDINGS: return "too many bindings";
-    case PDL_ERR_NOT_FINITE: return "NaN or infinite value for an integer quantity";
-    default: return "unknown error";
-    }
-}
-
-void pdl_core_set_started(int started) { pdl_started = started; }
-int pdl_core_started(void) { return pdl_started; }
 
 /* Common checks of add_quantity & co.; returns PDL_OK or the refusal. */
 static int pdl_declare(struct pdl_head *h, const char *fn)

@@ -31,12 +31,23 @@ int pdl_core_plan(void);
 /* run_pdl's common part: plan, bring up the ports, mark the set started
  * (declarations are refused from now on), write the initial actuator values. */
 int pdl_core_start(void);
+void pdl_core_reset(void);
+
+/* ---- shared state below the core and the binding table (pdl_state.c) ---- */
+/* Non-zero once run_pdl() started the set (declarations are refused). */
+extern int pdl_started;
 /* Marks the set as started (refuses further declarations). */
 void pdl_core_set_started(int started);
 int pdl_core_started(void);
-/* Counts and reports a refused call; returns code. */
-int pdl_refuse(int code, const char *what);
-void pdl_core_reset(void);
+/* Counts and reports a refused call (pdl_state.c). */
+void pdl_count_refusal(int code, const char *what);
+/* pdl_count_refusal, then code: inline, so that a caller's analysis sees the
+ * refusal's result (a refused NULL is never dereferenced after it). */
+static inline int pdl_refuse(int code, const char *what)
+{
+    pdl_count_refusal(code, what);
+    return code;
+}
 /* Statistics the platform keeps (overruns, cycle ticks). */
 extern struct pdl_stats pdl_stats;
 /* Nominal cycle period (the platform sets it from f0). */
@@ -59,6 +70,8 @@ void pdl_bind_refresh_sensors(void);
 void pdl_bind_write_actuators(int force);
 /* Valid port/index for a direction: PDL_OK or PDL_ERR_PORT. */
 int pdl_port_check(enum pdl_port port, unsigned index, int output);
+/* The port's kind in the board's port table (drivers/sai_ports.h), or -1. */
+int pdl_port_kind(enum pdl_port port);
 void pdl_bind_reset(void);
 
 /* ---- platform ports ---- */

@@ -7,7 +7,7 @@
  *
  * The same file runs on the emulated board (apps/ecosystem/ecosystem.c: the
  * PDL runtime's cycle thread, the drivers' sampler and motor driver) and on
- * the host (emu/world/host/eco_host.c: the PDL host runtime), against the
+ * the host (apps/ecosystem/host/eco_host.c: the PDL host runtime), against the
  * same world.
  *
  * Wiring (the arena robot's, pdl/robot.h):

@@ -6,3 +6,13 @@
 iotest_TICK_HZ := 1024
 # Its main starts the board itself (board_start ... k_start).
 iotest_BOOT := self
+
+# Its tests (suite drivers-target): drivers/tests/target/ boots it on
+# qemu -M robocube and drives the I/O drivers over the console and QMP.
+CHECKS += drivers-target
+.PHONY: check-drivers-target
+check-drivers-target:
+	@$(SETUP) base m68k qemu
+	@$(MAKE) --no-print-directory firmware APP=iotest
+	@BSCHED_QEMU=$(QEMU_M68K) IOTEST_ELF=$(call app_elf,iotest) FW_ICOUNT=$(FW_ICOUNT) \
+	    ci/pytest-suite drivers-target drivers/tests/target

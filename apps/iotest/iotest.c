@@ -34,8 +34,9 @@
 #include "drivers/bio.h"
 #include "drivers/binin.h"
 #include "drivers/board_io.h"
+#include "drivers/cmd.h"
 #include "drivers/drv_err.h"
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "drivers/fastout.h"
 #include "drivers/i2c.h"
 #include "drivers/sampler.h"
@@ -150,15 +151,6 @@ static int parse_num(const char *s, long *out)
     return 0;
 }
 
-static int streq(const char *a, const char *b)
-{
-    while (*a && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
-}
-
 static void cmd_bench(long n, int (*fn)(unsigned))
 {
     k_ticks_t calib_ticks, run_ticks = 0;
@@ -218,126 +210,193 @@ static void cmd_benchsamp(unsigned period_ms, unsigned periods)
              (unsigned long)(sampler_overruns() - over0));
 }
 
+/* The numeric arguments of the line being run (hex with 0x), for the commands below. */
+static long a[IOTEST_MAX_ARGS];
+
+static void c_ad(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=ad");
+    for (unsigned ch = 0; ch < ANALOG_INPUTS; ch++)
+        k_printf(" %d", analog_read(ch));
+    k_printf("\n");
+}
+
+static void c_da(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=da %d\n", analog_write((unsigned)a[0], (int)a[1]));
+}
+
+static void c_bi(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=bi");
+    for (unsigned l = 0; l < BIO_LINES; l++)
+        k_printf(" %d", bio_read(l));
+    k_printf("\n");
+}
+
+static void c_bo(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=bo %d\n", bio_write((unsigned)a[0], (int)a[1]));
+}
+
+static void c_in(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=in");
+    for (unsigned n = 0; n <= BININ_LAST + 1u; n++) {
+        if (n >= BININ_FIRST && n <= BININ_LAST)
+            k_printf(" %d", binin_read(n));
+    }
+    k_printf(" %d %d\n", binin_read(0), binin_read(6));   /* both DRV_ERR_CHANNEL */
+}
+
+static void c_fo(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    int rc = fastout_write((unsigned)a[0], (int)a[1]);
+    k_printf("=fo %d %u\n", rc, (unsigned)fastout_get());
+}
+
+static void c_fa(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    int rc = fastout_write_all((uint16_t)a[0]);
+    k_printf("=fa %d %u\n", rc, (unsigned)fastout_get());
+}
+
+static void c_snap(int argc, char **argv, const char *line)
+{
+    struct sensor_snapshot s;
+    (void)argc; (void)argv; (void)line;
+    sampler_read(&s);
+    k_printf("=snap %lu %lu %lu %u %u %d", (unsigned long)s.seq, (unsigned long)s.time_us,
+             (unsigned long)s.valid, (unsigned)s.bio, (unsigned)s.binin, s.last_error);
+    for (unsigned ch = 0; ch < ANALOG_INPUTS; ch++)
+        k_printf(" %u", (unsigned)s.analog[ch]);
+    k_printf("\n");
+}
+
+static void c_period(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=period %d\n", a[0] < 0 ? DRV_ERR_RANGE : sampler_start((unsigned)a[0]));
+}
+
+static void c_probe(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=probe %d\n", i2c_probe((unsigned)a[0], (uint8_t)a[1]));
+}
+
+static void c_scan(int argc, char **argv, const char *line)
+{
+    uint8_t found[16];
+    (void)argc; (void)argv; (void)line;
+    int n = i2c_scan((unsigned)a[0], found, 16u);
+    k_printf("=scan %d", n);
+    for (int i = 0; i < n && i < 16; i++)
+        k_printf(" %u", (unsigned)found[i]);
+    k_printf("\n");
+}
+
+static void c_stats(int argc, char **argv, const char *line)
+{
+    struct i2c_stats st;
+    (void)argc; (void)argv; (void)line;
+    int rc = i2c_get_stats((unsigned)a[0], &st);
+    if (rc != DRV_OK) {
+        k_printf("=stats %d\n", rc);
+        return;
+    }
+    k_printf("=stats %lu %lu %lu %lu %lu %lu\n", (unsigned long)st.done,
+             (unsigned long)st.absent, (unsigned long)st.arb, (unsigned long)st.timeouts,
+             (unsigned long)st.resets, (unsigned long)st.interrupts);
+}
+
+static void c_bench(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    if (a[0] < 1 || a[0] > 1000) {
+        k_printf("=err bench 1..1000\n");
+        return;
+    }
+    cmd_bench(a[0], sweeps);
+}
+
+static void c_benchrd(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    cmd_bench(a[0], long_reads);
+}
+
+static void c_benchsamp(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    if (a[0] < 1 || a[0] > 1000 || a[1] < 1 || a[1] > 1000) {
+        k_printf("=err benchsamp 1..1000 1..1000\n");
+        return;
+    }
+    cmd_benchsamp((unsigned)a[0], (unsigned)a[1]);
+}
+
+static void c_benchsleep(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    cmd_bench(a[0], sleeps);
+}
+
+static void c_uptime(int argc, char **argv, const char *line)
+{
+    (void)argc; (void)argv; (void)line;
+    k_printf("=uptime %lu\n", (unsigned long)k_uptime_ms());
+}
+
+/* Every command takes exactly min_args numbers. */
+static const struct cmd commands[] = {
+    {"ad", "", "", 0, 0, c_ad},             {"da", "CH V", "", 2, 2, c_da},
+    {"bi", "", "", 0, 0, c_bi},             {"bo", "LINE V", "", 2, 2, c_bo},
+    {"in", "", "", 0, 0, c_in},             {"fo", "BIT V", "", 2, 2, c_fo},
+    {"fa", "BITS", "", 1, 1, c_fa},         {"snap", "", "", 0, 0, c_snap},
+    {"period", "MS", "", 1, 1, c_period},   {"probe", "BUS ADDR", "", 2, 2, c_probe},
+    {"scan", "BUS", "", 1, 1, c_scan},      {"stats", "BUS", "", 1, 1, c_stats},
+    {"bench", "N", "", 1, 1, c_bench},      {"benchrd", "N", "", 1, 1, c_benchrd},
+    {"benchsamp", "MS N", "", 2, 2, c_benchsamp},
+    {"benchsleep", "N", "", 1, 1, c_benchsleep},
+    {"uptime", "", "", 0, 0, c_uptime},
+};
+
 static void execute(char *line)
 {
     char *argv[IOTEST_MAX_ARGS + 1u];
-    long a[IOTEST_MAX_ARGS] = { 0 };
-    unsigned argc = 0;
-    char *p = line;
-
-    while (*p && argc <= IOTEST_MAX_ARGS) {
-        while (*p == ' ')
-            *p++ = '\0';
-        if (*p == '\0')
-            break;
-        argv[argc++] = p;
-        while (*p && *p != ' ')
-            p++;
+    const struct cmd *c;
+    int argc = cmd_split(line, argv, (int)IOTEST_MAX_ARGS + 1);
+    if (argc < 0) {
+        k_printf("=err too many arguments\n");
+        return;
     }
     if (argc == 0)
         return;
-    for (unsigned i = 1; i < argc; i++) {
-        if (parse_num(argv[i], &a[i - 1u]) != 0) {
+    for (int i = 1; i < argc; i++) {
+        if (parse_num(argv[i], &a[i - 1]) != 0) {
             k_printf("=err bad number '%s'\n", argv[i]);
             return;
         }
     }
-#define NEED(n) do { if (argc != (n) + 1u) { k_printf("=err %s takes %u arguments\n", argv[0], (unsigned)(n)); return; } } while (0)
-    if (streq(argv[0], "ad")) {
-        NEED(0);
-        k_printf("=ad");
-        for (unsigned ch = 0; ch < ANALOG_INPUTS; ch++)
-            k_printf(" %d", analog_read(ch));
-        k_printf("\n");
-    } else if (streq(argv[0], "da")) {
-        NEED(2);
-        k_printf("=da %d\n", analog_write((unsigned)a[0], (int)a[1]));
-    } else if (streq(argv[0], "bi")) {
-        NEED(0);
-        k_printf("=bi");
-        for (unsigned l = 0; l < BIO_LINES; l++)
-            k_printf(" %d", bio_read(l));
-        k_printf("\n");
-    } else if (streq(argv[0], "bo")) {
-        NEED(2);
-        k_printf("=bo %d\n", bio_write((unsigned)a[0], (int)a[1]));
-    } else if (streq(argv[0], "in")) {
-        NEED(0);
-        k_printf("=in");
-        for (unsigned n = 0; n <= BININ_LAST + 1u; n++) {
-            if (n >= BININ_FIRST && n <= BININ_LAST)
-                k_printf(" %d", binin_read(n));
-        }
-        k_printf(" %d %d\n", binin_read(0), binin_read(6));   /* both DRV_ERR_CHANNEL */
-    } else if (streq(argv[0], "fo")) {
-        NEED(2);
-        int rc = fastout_write((unsigned)a[0], (int)a[1]);
-        k_printf("=fo %d %u\n", rc, (unsigned)fastout_get());
-    } else if (streq(argv[0], "fa")) {
-        NEED(1);
-        int rc = fastout_write_all((uint16_t)a[0]);
-        k_printf("=fa %d %u\n", rc, (unsigned)fastout_get());
-    } else if (streq(argv[0], "snap")) {
-        struct sensor_snapshot s;
-        NEED(0);
-        sampler_read(&s);
-        k_printf("=snap %lu %lu %lu %u %u %d", (unsigned long)s.seq, (unsigned long)s.time_us,
-                 (unsigned long)s.valid, (unsigned)s.bio, (unsigned)s.binin, s.last_error);
-        for (unsigned ch = 0; ch < ANALOG_INPUTS; ch++)
-            k_printf(" %u", (unsigned)s.analog[ch]);
-        k_printf("\n");
-    } else if (streq(argv[0], "period")) {
-        NEED(1);
-        k_printf("=period %d\n", a[0] < 0 ? DRV_ERR_RANGE : sampler_start((unsigned)a[0]));
-    } else if (streq(argv[0], "probe")) {
-        NEED(2);
-        k_printf("=probe %d\n", i2c_probe((unsigned)a[0], (uint8_t)a[1]));
-    } else if (streq(argv[0], "scan")) {
-        uint8_t found[16];
-        NEED(1);
-        int n = i2c_scan((unsigned)a[0], found, 16u);
-        k_printf("=scan %d", n);
-        for (int i = 0; i < n && i < 16; i++)
-            k_printf(" %u", (unsigned)found[i]);
-        k_printf("\n");
-    } else if (streq(argv[0], "stats")) {
-        struct i2c_stats st;
-        NEED(1);
-        int rc = i2c_get_stats((unsigned)a[0], &st);
-        if (rc != DRV_OK) {
-            k_printf("=stats %d\n", rc);
-            return;
-        }
-        k_printf("=stats %lu %lu %lu %lu %lu %lu\n", (unsigned long)st.done,
-                 (unsigned long)st.absent, (unsigned long)st.arb, (unsigned long)st.timeouts,
-                 (unsigned long)st.resets, (unsigned long)st.interrupts);
-    } else if (streq(argv[0], "bench")) {
-        NEED(1);
-        if (a[0] < 1 || a[0] > 1000) {
-            k_printf("=err bench 1..1000\n");
-            return;
-        }
-        cmd_bench(a[0], sweeps);
-    } else if (streq(argv[0], "benchrd")) {
-        NEED(1);
-        cmd_bench(a[0], long_reads);
-    } else if (streq(argv[0], "benchsamp")) {
-        NEED(2);
-        if (a[0] < 1 || a[0] > 1000 || a[1] < 1 || a[1] > 1000) {
-            k_printf("=err benchsamp 1..1000 1..1000\n");
-            return;
-        }
-        cmd_benchsamp((unsigned)a[0], (unsigned)a[1]);
-    } else if (streq(argv[0], "benchsleep")) {
-        NEED(1);
-        cmd_bench(a[0], sleeps);
-    } else if (streq(argv[0], "uptime")) {
-        NEED(0);
-        k_printf("=uptime %lu\n", (unsigned long)k_uptime_ms());
-    } else {
+    switch (cmd_find(commands, sizeof commands / sizeof commands[0], argc, argv, &c)) {
+    case CMD_FOUND:
+        c->run(argc, argv, line);
+        break;
+    case CMD_USAGE:
+        k_printf("=err %s takes %u arguments\n", c->name, (unsigned)c->min_args);
+        break;
+    default:
         k_printf("=err unknown command '%s'\n", argv[0]);
+        break;
     }
-#undef NEED
 }
 
 static void *main_fn(void *arg)

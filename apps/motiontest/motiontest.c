@@ -28,8 +28,9 @@
 
 #include "kernel.h"
 #include "drivers/board.h"
+#include "drivers/cmd.h"
 #include "drivers/drv_err.h"
-#include "drivers/mc68681.h"
+#include "boards/robocube/mc68681.h"
 #include "drivers/motor.h"
 #include "drivers/odometry.h"
 #include "drivers/tpu.h"
@@ -116,49 +117,6 @@ static void read_line(char *buf, unsigned size)
     }
 }
 
-static int str_eq(const char *a, const char *b)
-{
-    while (*a != '\0' && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
-}
-
-/* Splits "word n1 n2 ..." in place; returns the number count or -1. */
-static int parse(char *line, char **word, int32_t *num, unsigned max)
-{
-    unsigned count = 0;
-    char *p = line;
-    while (*p == ' ')
-        p++;
-    *word = p;
-    while (*p != '\0' && *p != ' ')
-        p++;
-    while (*p != '\0') {
-        int32_t v = 0, sign = 1;
-        int digits = 0;
-        *p++ = '\0';
-        while (*p == ' ')
-            p++;
-        if (*p == '\0')
-            break;
-        if (*p == '-') {
-            sign = -1;
-            p++;
-        }
-        while (*p >= '0' && *p <= '9') {
-            v = v * 10 + (*p - '0');
-            p++;
-            digits++;
-        }
-        if (digits == 0 || (*p != ' ' && *p != '\0') || count == max)
-            return -1;
-        num[count++] = sign * v;
-    }
-    return (int)count;
-}
-
 static void step_response(unsigned m, int32_t v, int32_t ms)
 {
     struct motor_service_stats st;
@@ -198,136 +156,386 @@ static void step_response(unsigned m, int32_t v, int32_t ms)
         k_printf("%lu %ld %d\n", (unsigned long)times[i], (long)speeds[i], (int)powers[i]);
 }
 
-static void run_command(char *line)
+/* The numbers of the line being run, for the commands below. */
+static int32_t a[ARGS_MAX];
+
+static void m_pwm(int argc, char **argv, const char *line)
 {
-    char *w;
-    int32_t a[ARGS_MAX] = {0, 0, 0, 0};
-    int n = parse(line, &w, a, ARGS_MAX);
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_pwm(ch, (uint32_t)a[1], (int)a[2]));
+}
+
+static void m_ticks(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_pwm_ticks(ch, (uint16_t)a[1], (uint16_t)a[2]));
+}
+
+static void m_pwmget(int argc, char **argv, const char *line)
+{
     unsigned ch = (unsigned)a[0];
     int r;
-
-    if (n < 0) {
-        reply(DRV_ERR_PARAM);
-    } else if (str_eq(w, "pwm") && n == 3) {
-        reply(tpu_pwm(ch, (uint32_t)a[1], (int)a[2]));
-    } else if (str_eq(w, "ticks") && n == 3) {
-        reply(tpu_pwm_ticks(ch, (uint16_t)a[1], (uint16_t)a[2]));
-    } else if (str_eq(w, "pwmget") && n == 1) {
-        uint32_t hz;
-        int pm;
-        r = tpu_pwm_get(ch, &hz, &pm);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %lu %d\n", (unsigned long)hz, pm);
-    } else if (str_eq(w, "dout") && n == 2) {
-        reply(tpu_dio_write(ch, (int)a[1]));
-    } else if (str_eq(w, "din") && n == 1) {
-        r = tpu_dio_read(ch);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %d\n", r);
-    } else if (str_eq(w, "itc") && n == 2) {
-        reply(tpu_itc_start(ch, (unsigned)a[1]));
-    } else if (str_eq(w, "itcget") && n == 1) {
-        uint32_t c;
-        r = tpu_itc_count(ch, &c);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %lu\n", (unsigned long)c);
-    } else if (str_eq(w, "itcclr") && n == 1) {
-        reply(tpu_itc_clear(ch));
-    } else if (str_eq(w, "qdec") && n == 2) {
-        reply(tpu_qdec_start(ch, (unsigned)a[1]));
-    } else if (str_eq(w, "qpos") && n == 1) {
-        int32_t pos;
-        r = tpu_qdec_position(ch, &pos);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %ld\n", (long)pos);
-    } else if (str_eq(w, "qset") && n == 2) {
-        reply(tpu_qdec_set(ch, a[1]));
-    } else if (str_eq(w, "irq") && n == 1) {
-        if (ch < TPU_CHANNELS)
-            irq_counts[ch] = 0;
-        reply(tpu_attach_irq(ch, count_irq, NULL));
-    } else if (str_eq(w, "irqget") && n == 1) {
-        if (ch >= TPU_CHANNELS)
-            reply(DRV_ERR_CHANNEL);
-        else
-            k_printf("ok %lu %lu\n", (unsigned long)irq_counts[ch], (unsigned long)tpu_irq_count(ch));
-    } else if (str_eq(w, "irqwait") && n == 2 && ch < TPU_CHANNELS && a[1] >= 0) {
-        /* Interrupts of ch during MS ms, counted inside the firmware: the
-         * host's own pauses between commands do not enter the count. */
-        uint32_t before = irq_counts[ch];
-        (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[1]));
-        k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
-    } else if (str_eq(w, "release") && n == 1) {
-        reply(tpu_release(ch));
-    } else if (str_eq(w, "motor") && n == 2) {
-        reply(motor_set(ch, (int)a[1]));
-    } else if (str_eq(w, "speed") && n == 2) {
-        reply(motor_set_speed(ch, a[1]));
-    } else if (str_eq(w, "off") && n == 1) {
-        reply(motor_control_off(ch));
-    } else if (str_eq(w, "gains") && n == 3) {
-        reply(motor_set_gains(ch, a[1], a[2]));
-    } else if (str_eq(w, "period") && n == 1) {
-        reply(motor_control_start((unsigned)a[0]));
-    } else if (str_eq(w, "enc") && n == 1) {
-        int32_t pos, spd;
-        int pw;
-        r = motor_position(ch, &pos);
-        if (r >= 0)
-            r = motor_speed(ch, &spd);
-        if (r >= 0)
-            r = motor_power(ch, &pw);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %ld %ld %d\n", (long)pos, (long)spd, pw);
-    } else if (str_eq(w, "stats") && n == 0) {
-        struct motor_service_stats st;
-        r = motor_service_stats(&st);
-        if (r < 0)
-            reply(r);
-        else
-            k_printf("ok %lu %lu %lu\n", (unsigned long)st.periods, (unsigned long)st.period_ms,
-                     (unsigned long)st.late);
-    } else if (str_eq(w, "wait") && n == 1 && a[0] >= 0) {
-        (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[0]));
-        reply(DRV_OK);
-    } else if (str_eq(w, "step") && n == 3) {
-        step_response(ch, a[1], a[2]);
-    } else if (str_eq(w, "odo") && n == 2) {
-        int32_t l = 0, rt = 0;
-        r = motor_position(ODO_LEFT, &l);
-        if (r >= 0)
-            r = motor_position(ODO_RIGHT, &rt);
-        if (r >= 0)
-            r = odometry_init(&odo, a[0], a[1], l, rt);
+    (void)argc;
+    (void)argv;
+    (void)line;
+    uint32_t hz;
+    int pm;
+    r = tpu_pwm_get(ch, &hz, &pm);
+    if (r < 0)
         reply(r);
-    } else if (str_eq(w, "odoget") && n == 0) {
-        int32_t l = 0, rt = 0;
-        r = motor_position(ODO_LEFT, &l);
-        if (r >= 0)
-            r = motor_position(ODO_RIGHT, &rt);
-        if (r < 0) {
-            reply(r);
-        } else {
-            odometry_update(&odo, l, rt);
-            k_printf("ok %ld %ld %lu\n", (long)odo.x, (long)odo.y, (unsigned long)odo.heading);
-        }
-    } else if (str_eq(w, "cpuload") && n == 1 && a[0] > 0) {
-        cpu_load(a[0]);
-    } else if (str_eq(w, "time") && n == 0) {
-        k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
-    } else {
+    else
+        k_printf("ok %lu %d\n", (unsigned long)hz, pm);
+}
+
+static void m_dout(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_dio_write(ch, (int)a[1]));
+}
+
+static void m_din(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    r = tpu_dio_read(ch);
+    if (r < 0)
+        reply(r);
+    else
+        k_printf("ok %d\n", r);
+}
+
+static void m_itc(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_itc_start(ch, (unsigned)a[1]));
+}
+
+static void m_itcget(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    uint32_t c;
+    r = tpu_itc_count(ch, &c);
+    if (r < 0)
+        reply(r);
+    else
+        k_printf("ok %lu\n", (unsigned long)c);
+}
+
+static void m_itcclr(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_itc_clear(ch));
+}
+
+static void m_qdec(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_qdec_start(ch, (unsigned)a[1]));
+}
+
+static void m_qpos(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    int32_t pos;
+    r = tpu_qdec_position(ch, &pos);
+    if (r < 0)
+        reply(r);
+    else
+        k_printf("ok %ld\n", (long)pos);
+}
+
+static void m_qset(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_qdec_set(ch, a[1]));
+}
+
+static void m_irq(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    if (ch < TPU_CHANNELS)
+        irq_counts[ch] = 0;
+    reply(tpu_attach_irq(ch, count_irq, NULL));
+}
+
+static void m_irqget(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    if (ch >= TPU_CHANNELS)
+        reply(DRV_ERR_CHANNEL);
+    else
+        k_printf("ok %lu %lu\n", (unsigned long)irq_counts[ch], (unsigned long)tpu_irq_count(ch));
+}
+
+static void m_irqwait(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    if (!(ch < TPU_CHANNELS && a[1] >= 0)) {
         reply(DRV_ERR_PARAM);
+        return;
     }
+    /* Interrupts of ch during MS ms, counted inside the firmware: the
+     * host's own pauses between commands do not enter the count. */
+    uint32_t before = irq_counts[ch];
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[1]));
+    k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
+}
+
+static void m_release(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(tpu_release(ch));
+}
+
+static void m_motor(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(motor_set(ch, (int)a[1]));
+}
+
+static void m_speed(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(motor_set_speed(ch, a[1]));
+}
+
+static void m_off(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(motor_control_off(ch));
+}
+
+static void m_gains(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(motor_set_gains(ch, a[1], a[2]));
+}
+
+static void m_period(int argc, char **argv, const char *line)
+{
+    (void)argc;
+    (void)argv;
+    (void)line;
+    reply(motor_control_start((unsigned)a[0]));
+}
+
+static void m_enc(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    int32_t pos, spd;
+    int pw;
+    r = motor_position(ch, &pos);
+    if (r >= 0)
+        r = motor_speed(ch, &spd);
+    if (r >= 0)
+        r = motor_power(ch, &pw);
+    if (r < 0)
+        reply(r);
+    else
+        k_printf("ok %ld %ld %d\n", (long)pos, (long)spd, pw);
+}
+
+static void m_stats(int argc, char **argv, const char *line)
+{
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    struct motor_service_stats st;
+    r = motor_service_stats(&st);
+    if (r < 0)
+        reply(r);
+    else
+        k_printf("ok %lu %lu %lu\n", (unsigned long)st.periods, (unsigned long)st.period_ms,
+                 (unsigned long)st.late);
+}
+
+static void m_wait(int argc, char **argv, const char *line)
+{
+    (void)argc;
+    (void)argv;
+    (void)line;
+    if (!(a[0] >= 0)) {
+        reply(DRV_ERR_PARAM);
+        return;
+    }
+    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[0]));
+    reply(DRV_OK);
+}
+
+static void m_step(int argc, char **argv, const char *line)
+{
+    unsigned ch = (unsigned)a[0];
+    (void)argc;
+    (void)argv;
+    (void)line;
+    step_response(ch, a[1], a[2]);
+}
+
+static void m_odo(int argc, char **argv, const char *line)
+{
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    int32_t l = 0, rt = 0;
+    r = motor_position(ODO_LEFT, &l);
+    if (r >= 0)
+        r = motor_position(ODO_RIGHT, &rt);
+    if (r >= 0)
+        r = odometry_init(&odo, a[0], a[1], l, rt);
+    reply(r);
+}
+
+static void m_odoget(int argc, char **argv, const char *line)
+{
+    int r;
+    (void)argc;
+    (void)argv;
+    (void)line;
+    int32_t l = 0, rt = 0;
+    r = motor_position(ODO_LEFT, &l);
+    if (r >= 0)
+        r = motor_position(ODO_RIGHT, &rt);
+    if (r < 0) {
+        reply(r);
+    } else {
+        odometry_update(&odo, l, rt);
+        k_printf("ok %ld %ld %lu\n", (long)odo.x, (long)odo.y, (unsigned long)odo.heading);
+    }
+}
+
+static void m_cpuload(int argc, char **argv, const char *line)
+{
+    (void)argc;
+    (void)argv;
+    (void)line;
+    if (!(a[0] > 0)) {
+        reply(DRV_ERR_PARAM);
+        return;
+    }
+    cpu_load(a[0]);
+}
+
+static void m_time(int argc, char **argv, const char *line)
+{
+    (void)argc;
+    (void)argv;
+    (void)line;
+    k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
+}
+
+/* Every command takes exactly min_args numbers; anything else is err DRV_ERR_PARAM. */
+static const struct cmd commands[] = {
+    {"pwm", "", "", 3, 3, m_pwm},
+    {"ticks", "", "", 3, 3, m_ticks},
+    {"pwmget", "", "", 1, 1, m_pwmget},
+    {"dout", "", "", 2, 2, m_dout},
+    {"din", "", "", 1, 1, m_din},
+    {"itc", "", "", 2, 2, m_itc},
+    {"itcget", "", "", 1, 1, m_itcget},
+    {"itcclr", "", "", 1, 1, m_itcclr},
+    {"qdec", "", "", 2, 2, m_qdec},
+    {"qpos", "", "", 1, 1, m_qpos},
+    {"qset", "", "", 2, 2, m_qset},
+    {"irq", "", "", 1, 1, m_irq},
+    {"irqget", "", "", 1, 1, m_irqget},
+    {"irqwait", "", "", 2, 2, m_irqwait},
+    {"release", "", "", 1, 1, m_release},
+    {"motor", "", "", 2, 2, m_motor},
+    {"speed", "", "", 2, 2, m_speed},
+    {"off", "", "", 1, 1, m_off},
+    {"gains", "", "", 3, 3, m_gains},
+    {"period", "", "", 1, 1, m_period},
+    {"enc", "", "", 1, 1, m_enc},
+    {"stats", "", "", 0, 0, m_stats},
+    {"wait", "", "", 1, 1, m_wait},
+    {"step", "", "", 3, 3, m_step},
+    {"odo", "", "", 2, 2, m_odo},
+    {"odoget", "", "", 0, 0, m_odoget},
+    {"cpuload", "", "", 1, 1, m_cpuload},
+    {"time", "", "", 0, 0, m_time},
+};
+
+static void run_command(char *line)
+{
+    char *argv[ARGS_MAX + 1u];
+    const struct cmd *c;
+    int argc = cmd_split(line, argv, (int)ARGS_MAX + 1);
+    if (argc <= 0) {
+        reply(DRV_ERR_PARAM);
+        return;
+    }
+    for (int i = 1; i < argc; i++) {
+        if (!cmd_parse_int(argv[i], &a[i - 1])) {
+            reply(DRV_ERR_PARAM);
+            return;
+        }
+    }
+    if (cmd_find(commands, sizeof commands / sizeof commands[0], argc, argv, &c) != CMD_FOUND)
+        reply(DRV_ERR_PARAM);
+    else
+        c->run(argc, argv, line);
 }
 
 static void *test_main(void *arg)

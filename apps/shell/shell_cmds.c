@@ -12,6 +12,7 @@
 
 #include "kernel.h"
 #include "drivers/board.h"
+#include "drivers/cmd.h"
 #include "drivers/console_in.h"
 #include "drivers/drv_err.h"
 #include "drivers/i2c.h"
@@ -20,14 +21,6 @@
 #include "drivers/tpu.h"
 #include "net/net.h"
 #include "net/auth.h"
-
-struct shell_cmd {
-    const char *name;
-    const char *usage;      /* arguments, for help and error messages */
-    const char *what;
-    int min_args, max_args; /* words after the command name */
-    void (*run)(int argc, char **argv, const char *line);
-};
 
 static void reply_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 static void reply_error(const char *fmt, ...)
@@ -38,42 +31,6 @@ static void reply_error(const char *fmt, ...)
     (void)k_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     k_printf("error: %s\n", text);
-}
-
-/* A signed decimal int32 ("-12", "+5", "300"): 1 if it is one, else 0. */
-static int parse_int(const char *s, int32_t *out)
-{
-    uint32_t v = 0, limit = 0x7FFFFFFFu;
-    int neg = 0;
-    if (*s == '-' || *s == '+') {
-        neg = (*s == '-');
-        s++;
-    }
-    if (neg)
-        limit = 0x80000000u;
-    if (*s == '\0')
-        return 0;
-    for (; *s != '\0'; s++) {
-        uint32_t d;
-        if (*s < '0' || *s > '9')
-            return 0;
-        d = (uint32_t)(*s - '0');
-        if (v > (limit - d) / 10u)
-            return 0;
-        v = v * 10u + d;
-    }
-    *out = neg ? (int32_t)(0u - v) : (int32_t)v;
-    return 1;
-}
-
-/* Whole-string equality (no libc on the target). */
-static int same(const char *a, const char *b)
-{
-    while (*a != '\0' && *a == *b) {
-        a++;
-        b++;
-    }
-    return *a == *b;
 }
 
 /* The channel named by the command's first two words ("ad 5"), parsed by SAI
@@ -87,7 +44,7 @@ static int channel_of(const char *line, char **argv, struct sai_channel *ch)
         return rc;
     for (k = 0; k < SAI_KIND_COUNT; k++) { /* name the numbers the kind has */
         const struct sai_kind_info *info = sai_kind_info(k);
-        if (same(argv[0], info->short_name)) {
+        if (cmd_same(argv[0], info->short_name)) {
             reply_error("%s %s: no such channel (%s %u..%u)", argv[0], argv[1],
                         info->short_name, info->first, info->last);
             return rc;
@@ -127,7 +84,7 @@ static void cmd_port(int argc, char **argv, const char *line)
         print_channel(ch, value);
         return;
     }
-    if (!parse_int(argv[2], &value)) {
+    if (!cmd_parse_int(argv[2], &value)) {
         reply_error("%s: '%s' is not a number", argv[0], argv[2]);
         return;
     }
@@ -154,9 +111,9 @@ static void cmd_led(int argc, char **argv, const char *line)
     if (sai_parse("led", &ch) < 0)
         return;
     if (argc == 2) {
-        if (same(argv[1], "on"))
+        if (cmd_same(argv[1], "on"))
             value = 1;
-        else if (same(argv[1], "off"))
+        else if (cmd_same(argv[1], "off"))
             value = 0;
         else {
             reply_error("led: '%s': say on or off", argv[1]);
@@ -185,11 +142,11 @@ static void cmd_pwm(int argc, char **argv, const char *line)
     int duty_now, rc;
     if (channel_of(line, argv, &ch) < 0)
         return;
-    if (!parse_int(argv[2], &permille)) {
+    if (!cmd_parse_int(argv[2], &permille)) {
         reply_error("pwm: '%s' is not a number", argv[2]);
         return;
     }
-    if (argc == 4 && !parse_int(argv[3], &hz)) {
+    if (argc == 4 && !cmd_parse_int(argv[3], &hz)) {
         reply_error("pwm: '%s' is not a number", argv[3]);
         return;
     }
@@ -222,7 +179,7 @@ static void cmd_motor(int argc, char **argv, const char *line)
     (void)argc;
     if (channel_of(line, argv, &ch) < 0)
         return;
-    if (!parse_int(argv[2], &permille)) {
+    if (!cmd_parse_int(argv[2], &permille)) {
         reply_error("motor: '%s' is not a number", argv[2]);
         return;
     }
@@ -251,7 +208,7 @@ static void cmd_speed(int argc, char **argv, const char *line)
     (void)k_snprintf(name, sizeof name, "motor %s", argv[1]); /* the channel as SAI names it */
     if (channel_of(name, (char *[]){"motor", argv[1]}, &ch) < 0)
         return;
-    if (!parse_int(argv[2], &cps)) {
+    if (!cmd_parse_int(argv[2], &cps)) {
         reply_error("speed: '%s' is not a number", argv[2]);
         return;
     }
@@ -275,7 +232,7 @@ static void cmd_sleep(int argc, char **argv, const char *line)
     int32_t ms;
     (void)argc;
     (void)line;
-    if (!parse_int(argv[1], &ms) || ms < 0 || ms > SHELL_SLEEP_MAX_MS) {
+    if (!cmd_parse_int(argv[1], &ms) || ms < 0 || ms > SHELL_SLEEP_MAX_MS) {
         reply_error("sleep: '%s': milliseconds 0..%d", argv[1], SHELL_SLEEP_MAX_MS);
         return;
     }
@@ -355,7 +312,7 @@ static void cmd_i2c(int argc, char **argv, const char *line)
     unsigned bus;
     (void)argc;
     (void)line;
-    if (!same(argv[1], "scan")) {
+    if (!cmd_same(argv[1], "scan")) {
         reply_error("i2c: unknown subcommand '%s' (try i2c scan)", argv[1]);
         return;
     }
@@ -400,13 +357,13 @@ static void cmd_net(int argc, char **argv, const char *line)
             (void)net_stats_print();
         return;
     }
-    if (argc != 3 || !same(argv[1], "start")) {
+    if (argc != 3 || !cmd_same(argv[1], "start")) {
         reply_error("net: unknown subcommand '%s' (try net, or net start STATION)", argv[1]);
         return;
     }
     /* The link layer's station numbers, checked here so that a number out
      * of range is named with the range instead of net_init's bare code. */
-    if (!parse_int(argv[2], &station)) {
+    if (!cmd_parse_int(argv[2], &station)) {
         reply_error("net: '%s' is not a station number (0..%u)", argv[2],
                     (unsigned)LINK_MAX_STATIONS - 1u);
         return;
@@ -452,7 +409,7 @@ static void cmd_exit(int argc, char **argv, const char *line)
 
 static void cmd_help(int argc, char **argv, const char *line);
 
-static const struct shell_cmd commands[] = {
+static const struct cmd commands[] = {
     {"help", "", "this list", 0, 0, cmd_help},
     {"ad", "N", "read analog input N (0..23)", 1, 1, cmd_port},
     {"da", "N V", "set analog output N (0..5) to V (0..255)", 2, 2, cmd_port},
@@ -496,10 +453,11 @@ void shell_execute(char *line)
 {
     char original[SHELL_LINE_MAX + 1u];
     char *argv[SHELL_MAX_ARGS + 1u];
-    int argc = 0;
+    const struct cmd *c;
+    int argc;
     unsigned i;
     char *p = line;
-    /* the words, split in place; the line as typed (blanks trimmed) is kept for SAI */
+    /* the line as typed (blanks trimmed) is kept for SAI; the words are split in place */
     while (is_blank(*p))
         p++;
     for (i = 0; p[i] != '\0' && i < SHELL_LINE_MAX; i++)
@@ -507,31 +465,22 @@ void shell_execute(char *line)
     while (i > 0u && is_blank(original[i - 1u]))
         i--;
     original[i] = '\0';
-    while (*p != '\0') {
-        if (argc == (int)SHELL_MAX_ARGS + 1) {
-            reply_error("too many arguments");
-            return;
-        }
-        argv[argc++] = p;
-        while (*p != '\0' && !is_blank(*p))
-            p++;
-        if (*p != '\0')
-            *p++ = '\0';
-        while (is_blank(*p))
-            p++;
+    argc = cmd_split(p, argv, (int)SHELL_MAX_ARGS + 1);
+    if (argc < 0) {
+        reply_error("too many arguments");
+        return;
     }
     if (argc == 0)
         return;
-    for (i = 0; i < COMMAND_COUNT; i++) {
-        const struct shell_cmd *c = &commands[i];
-        if (!same(argv[0], c->name))
-            continue;
-        if (argc - 1 < c->min_args || argc - 1 > c->max_args) {
-            reply_error("usage: %s %s", c->name, c->usage);
-            return;
-        }
+    switch (cmd_find(commands, COMMAND_COUNT, argc, argv, &c)) {
+    case CMD_FOUND:
         c->run(argc, argv, original);
-        return;
+        break;
+    case CMD_USAGE:
+        reply_error("usage: %s %s", c->name, c->usage);
+        break;
+    default:
+        reply_error("unknown command '%s' (try help)", argv[0]);
+        break;
     }
-    reply_error("unknown command '%s' (try help)", argv[0]);
 }

@@ -17,7 +17,7 @@
  * at each of its actual runs, and the B-scheduler thread's overrun count.
  *
  * Tick rate: this image builds the kernel with K_TICK_HZ = 128 (PIT PITM =
- * 64, 7.8125 ms; kernel/firmware.mk FW_TICK_HZ) instead of the kernel's
+ * 64, 7.8125 ms; boards/robocube/board.mk FW_TICK_HZ) instead of the kernel's
  * default 1024 Hz, because every minor cycle prints its line: up to 26
  * characters, 6.8 ms at 38400 baud on real hardware, about 2.8 KB/s on
  * average at 128 Hz, within the console's 3.84 KB/s. At 1024 Hz the console
@@ -30,9 +30,9 @@
 #include "drivers/board.h"
 #include "k_board.h"
 #include "k_bsched.h"
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "drivers/led.h"
-#include "mc68332.h"
+#include "boards/robocube/mc68332.h"
 
 #ifndef TABLE1_MAJOR_CYCLES
 #define TABLE1_MAJOR_CYCLES 4u

@@ -1,4 +1,7 @@
-# The certified core as a drop-in bundle.
+# The certified core as a drop-in bundle. It stays in bsched/ because it is part
+# of what an embedder takes: the bundle's Makefile, setup.sh and README are
+# this folder's other files, shipped as they are, and the bundle is built from
+# bsched/ alone (nothing outside it goes in or is read).
 #   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, the WP and CBMC
 #                    proof jobs, unit tests, a README for embedders and a standalone
 #                    Makefile (bsched/dist/Makefile) whose make prove / make cbmc run
@@ -14,7 +17,7 @@ DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 # Repository paths, kept as they are inside the bundle (so the proof jobs' own
 # Makefiles run unchanged there).
 DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
-    bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/ref/tests/test_bsched_fig7.c \
+    bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/proofs/ref/tests/test_bsched_fig7.c \
     bsched/tests/test_bsched.c bsched/tests/table2.h bsched/proofs/README.md bsched/CAVEATS.md \
     bsched/proofs/tools.txt bsched/proofs/tools_check.py \
     $(filter-out %.pyc,$(shell find bsched/proofs/wp bsched/proofs/cbmc -type f -not -path '*/__pycache__/*'))

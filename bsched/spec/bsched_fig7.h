@@ -1,6 +1,6 @@
 /*
  * bsched/spec/bsched_fig7.h: the ACSL specification of the reference engine
- * bsched/ref/bsched_fig7.c (Fig. 7 with per-process waits over a plan made by
+ * bsched/proofs/ref/bsched_fig7.c (Fig. 7 with per-process waits over a plan made by
  * bsched_init).
  *
  * The plan is a struct bsched; the engine's mutable state (cycle, waits, ran)

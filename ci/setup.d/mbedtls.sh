@@ -71,10 +71,10 @@ cp -r "$tree/include" "$mbedtls_dir.tmp/include"
 cp "$tree"/library/*.h "$mbedtls_dir.tmp/library/"
 for f in $mbedtls_files; do cp "$tree/library/$f" "$mbedtls_dir.tmp/library/"; done
 cp "$tree/LICENSE" "$mbedtls_dir.tmp/" 2>/dev/null || true
-# The firmware's headers (kernel/firmware.mk): GCC's and newlib's, -nostdinc
+# The firmware's headers (boards/robocube/board.mk): GCC's and newlib's, -nostdinc
 # keeping the cross glibc's out. memcpy/memset/memcmp come from
 # kernel/lib/kstring.c at the link (every image has it), the rest of the C
-# library from newlib. -fno-store-merging as kernel/firmware.mk (no word
+# library from newlib. -fno-store-merging as boards/robocube/board.mk (no word
 # stores merged at odd addresses: the CPU32 faults on them).
 cross=m68k-linux-gnu-
 cflags=(-std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdinc -isystem "$("${cross}gcc" -print-file-name=include)"

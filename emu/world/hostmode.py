@@ -3,7 +3,7 @@ bsched.c, as a shared library through ctypes) against the same world, with a
 host copy of the board's motor model instead of the emulator. For developing
 behaviours: minutes of virtual time in seconds.
 
-Two kinds of library: the ecosystem's (emu/world/host/eco_host.c, which also
+Two kinds of library: the ecosystem's (apps/ecosystem/host/eco_host.c, which also
 reports its behaviours' contributions for the live view) and any PDL program
 with an ordinary main (emu/world/host/pdl_app_host.c, apps/apps.mk's
 app_host_lib): the world gives it every analog input and the DUART input port

@@ -1,7 +1,10 @@
 /*
- * What the nanokernel needs from a board. The RoboCube implements it in
- * drivers/k_board_robocube.c: the PIT drives k_tick, the console on DUART
- * channel B becomes interrupt-driven behind a ring buffer.
+ * What the nanokernel needs from a board (kernel/README.md, "The board
+ * interface"). The RoboCube implements it in boards/robocube/k_board_robocube.c:
+ * the PIT drives k_tick, and k_board_init registers the console writers
+ * (k_console_register, kernel.h): polled first, then interrupt-driven on DUART
+ * channel B behind a ring buffer. The image's start-up calls k_board_init;
+ * the kernel itself calls nothing of the board.
  */
 #ifndef K_BOARD_H
 #define K_BOARD_H
@@ -14,7 +17,8 @@
 /* Console transmit ring, bytes (power of two). */
 #define K_BOARD_CONSOLE_RING 1024u
 
-/* After k_init: programs the console (interrupt-driven output) and starts
+/* Called by the image's start-up after k_init: programs the console,
+ * registers its writers with the kernel (interrupt-driven output) and starts
  * the PIT at K_TICK_HZ. Ticks are counted once interrupts are enabled,
  * i.e. when k_start runs the first thread. Returns 0, or -1 when the PIT
  * cannot make K_TICK_HZ. */

@@ -193,6 +193,8 @@ int k_sem_timedwait(struct k_sem *s, const struct k_timespec *abs_monotonic);
 int k_sem_wait_ticks(struct k_sem *s, k_ticks_t timeout);
 int k_sem_post(struct k_sem *s);                 /* also from interrupt handlers */
 int k_sem_getvalue(struct k_sem *s, int32_t *value);
+/* Non-zero when a thread waits on s (a driver's handler posts only then). */
+int k_sem_has_waiter(const struct k_sem *s);
 
 /* ---- mutexes: owner-checked, not recursive, priority inheritance ---- */
 struct k_mutex {
@@ -272,6 +274,9 @@ typedef void (*k_irq_handler)(void *arg);
 int k_irq_register(unsigned vector, unsigned level, k_irq_handler handler, void *arg);
 /* Non-zero inside an interrupt handler. */
 int k_in_isr(void);
+/* Non-zero when the caller may wait: a thread of the started kernel, not a
+ * handler, not the start-up code before k_start. */
+int k_can_block(void);
 /* For a driver's own interrupt handler (claimed in the vector table, not
  * through k_irq_register) once it has masked all interrupt levels: runs
  * fn(arg) as the kernel runs a registered handler (on the interrupt stack
@@ -296,7 +301,7 @@ void k_init(void);
 void k_start(void);
 
 /* ---- console output (formatting without libc) ---- */
-/* Writes through the board's console hook (k_console_write). */
+/* Writes through the registered console writer (k_console_write). */
 int k_printf(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 /* Formats into buf (always NUL-terminated when size > 0); returns the length
  * the full output would have. Supports %d %i %u %x %X %c %s %p %% with
@@ -306,11 +311,23 @@ int k_snprintf(char *buf, size_t size, const char *fmt, ...) __attribute__((form
 int k_vsnprintf(char *buf, size_t size, const char *fmt, va_list ap);
 typedef void (*k_putc_fn)(void *ctx, char c);
 int k_vformat(k_putc_fn out, void *ctx, const char *fmt, va_list ap);
-/* Board hook: queues console bytes for interrupt-driven output. In a thread
- * it waits for room; in a handler or before k_start it drops what does not
- * fit (the console counts drops). Returns the bytes taken. */
+/* The console is a writer the board registers (as a printk hook is): the
+ * kernel calls no driver. Two functions:
+ *   write       takes what it can of s[0..len) and returns the count; in a
+ *               thread of the started kernel (k_can_block) it may wait for
+ *               room, elsewhere it must not (it drops what does not fit)
+ *   write_sync  sends every byte by polling before it returns, in any
+ *               context, interrupts masked or not (fault reports)
+ * write may be NULL: then write_sync serves both, the polled early writer a
+ * board registers as soon as its console can send (and keeps, if it has no
+ * interrupt-driven one). Registering again replaces both. Until a board
+ * registers a writer, console bytes are dropped. */
+typedef size_t (*k_console_write_fn)(const char *s, size_t len);
+typedef void (*k_console_sync_fn)(const char *s, size_t len);
+void k_console_register(k_console_write_fn write, k_console_sync_fn write_sync);
+/* Through the registered writer: returns the bytes taken. */
 size_t k_console_write(const char *s, size_t len);
-/* Board hook: write console bytes synchronously (fault reports, any context). */
+/* Through the registered polled writer (fault reports, any context). */
 void k_console_write_sync(const char *s, size_t len);
 
 /* ---- statistics ---- */

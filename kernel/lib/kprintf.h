@@ -24,7 +24,7 @@ int ksnprintf(char *buf, size_t size, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
 /* Where kprintf output goes: a console driver registers its putc here
- * (drivers/duart_console.c does in console_init). Until then kprintf
+ * (boards/robocube/duart_console.c does in console_init). Until then kprintf
  * output is dropped. */
 void kprintf_set_output(void (*putc)(char c));
 

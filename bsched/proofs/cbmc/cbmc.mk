@@ -52,7 +52,7 @@ cbmc_define_init_runs = $(foreach n,$(shell seq $(2) -1 1),$(foreach part,$(CBMC
 CBMC_INIT_RUNS := $(call cbmc_init_runs,init-sorted,$(CBMC_INIT_N))
 $(call cbmc_define_init_runs,init-sorted,$(CBMC_INIT_N),$(CBMC_INIT_P))
 CBMC_RUNS := major_cycle step agree init balance $(CBMC_INIT_RUNS) errors
-# agree: bsched_step and Fig. 7's reference engine (bsched/ref/) give the same
+# agree: bsched_step and Fig. 7's reference engine (bsched/proofs/ref/) give the same
 # results from any cycle t, and both states are again consistent for t + 1. In
 # make check at CBMC_AGREE_N, CBMC_AGREE_P; make cbmc-agree runs it at the goal
 # bounds CBMC_N, CBMC_P, one run per process count (long; not in make check).

@@ -73,10 +73,10 @@ wp_session_on    = $(filter 1,$(WP_SESSION))
 wp_empty :=
 wp_space := $(wp_empty) $(wp_empty)
 wp_comma := ,
-# Run `ref`: Fig. 7's reference engine (bsched/ref/bsched_fig7.c, spec in
+# Run `ref`: Fig. 7's reference engine (bsched/proofs/ref/bsched_fig7.c, spec in
 # spec/bsched_fig7.h). Only its own functions: the shared lemma functions it
 # calls are the same text that runs a and b prove. WP_FILE: the file of a
-# WP_FCT run (make prove WP_FCT=bsched_fig7_step WP_FILE=bsched/ref/bsched_fig7.c).
+# WP_FCT run (make prove WP_FCT=bsched_fig7_step WP_FILE=bsched/proofs/ref/bsched_fig7.c).
 WP_REF_FCT  := bsched_fig7_start,bsched_fig7_step,fig7_run_due,fig7_count_down,fig7_plan_plausible,fig7_period,lemma_fig7_zero_slots,lemma_fig7_next_phase
 # Its slowest goals (the loop and frame steps of bsched_fig7_step) take a few seconds
 # of CPU, which on the shared 2-core machine at load 12-15 exceeded 30 s of wall time:
@@ -87,9 +87,9 @@ WP_FILE     ?= bsched/bsched.c
 WP_FILE_all  = $(WP_FILE)
 WP_FILE_a    = bsched/bsched.c
 WP_FILE_b    = bsched/bsched.c
-WP_FILE_ref  = bsched/ref/bsched_fig7.c
+WP_FILE_ref  = bsched/proofs/ref/bsched_fig7.c
 WP_SPEC     += bsched/spec/bsched_fig7.h
-WP_SOURCES  += bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
+WP_SOURCES  += bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
 
 CHECKS += wp wp-negative
 PROOF_CHECKS += wp wp-negative

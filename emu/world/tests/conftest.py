@@ -1,6 +1,6 @@
 """Fixtures of the ecosystem tests (suite `eco`, make check-eco).
 
-Paths come from the environment set by emu/eco.mk: BSCHED_QEMU (the board
+Paths come from the environment set by apps/ecosystem/app.mk: BSCHED_QEMU (the board
 binary), ECO_ELF (the ecosystem firmware), ECO_HOST_LIB (the program built
 for the host)."""
 import os

@@ -1,6 +1,6 @@
 /*
  * Test images that fault on purpose, one per FAULT_KIND (chosen at build
- * time by kernel/firmware.mk):
+ * time by boards/robocube/board.mk):
  *   1 unmapped   long read from 0x400000, where nothing is mapped -> bus error
  *   2 flashwrite word write into the read-only flash               -> bus error
  *   3 illegal    the ILLEGAL opcode                                -> illegal instruction
@@ -10,7 +10,7 @@
  */
 #include <stdint.h>
 
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "kernel/lib/kprintf.h"
 
 #ifndef FAULT_KIND

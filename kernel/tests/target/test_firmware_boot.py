@@ -23,7 +23,7 @@ import robocube_emu
 QEMU = os.environ.get("BSCHED_QEMU", "")
 FW_DIR = Path(os.environ.get("FW_DIR", Path(__file__).resolve().parents[3] / "build" / "firmware"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
-ICOUNT = os.environ.get("FW_ICOUNT", "shift=8,sleep=off")   # as `make run` (kernel/firmware.mk)
+ICOUNT = os.environ.get("FW_ICOUNT", "shift=8,sleep=off")   # as `make run` (boards/robocube/board.mk)
 FIRMWARE = Path(os.environ.get("FW_ELF", FW_DIR / "table1" / "table1.elf"))
 FAULT_IMAGES = {kind: FW_DIR / "tests" / f"fault-{kind}.elf"
                 for kind in ("unmapped", "flashwrite", "illegal", "zerodivide")}
@@ -268,7 +268,7 @@ def all_images():
 def test_console_baud_variants_compile(tmp_path):
     """The console rates the driver offers all build; anything else is a clear error."""
     root = Path(__file__).resolve().parents[3]
-    src = root / "drivers" / "duart_console.c"
+    src = root / "boards" / "robocube" / "duart_console.c"
     base = [CROSS + "gcc", "-std=c99", "-mcpu=cpu32", "-Os", "-ffreestanding", "-nostdlib",
             "-Wall", "-Wextra", "-Werror", f"-I{root}", f"-I{root}/kernel/arch/cpu32", "-c",
             "-o", str(tmp_path / "console.o"), str(src)]

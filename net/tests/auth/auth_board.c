@@ -14,7 +14,7 @@
  */
 #include <stdint.h>
 
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "kernel/lib/kprintf.h"
 #include "net/auth.h"
 #include "net/tests/rfc4493.h"

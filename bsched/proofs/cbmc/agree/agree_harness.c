@@ -1,6 +1,6 @@
 /*
  * CBMC harness `agree`: the library's bsched_step and Fig. 7's reference
- * engine (bsched/ref/bsched_fig7.c) agree cycle by cycle, for an arbitrary
+ * engine (bsched/proofs/ref/bsched_fig7.c) agree cycle by cycle, for an arbitrary
  * minor cycle t of an arbitrary priority set, without simulating the cycles
  * before t.
  *

@@ -10,6 +10,7 @@ extern size_t host_console_len;
 extern unsigned host_irq_routed[256];
 /* Console writes made inside an interrupt handler since host_console_clear. */
 extern size_t host_console_writes_in_isr;
+/* Registers the host console as the kernel's writer and empties it. */
 void host_console_clear(void);
 /* A tick interrupt at this point of the calling thread. */
 void host_tick(void);

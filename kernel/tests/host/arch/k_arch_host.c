@@ -144,7 +144,8 @@ void host_raise_irq(unsigned vector)
 
 size_t host_console_writes_in_isr;
 
-size_t k_console_write(const char *s, size_t len)
+/* The host board's console writer: bytes go to host_console. */
+static size_t host_console_write(const char *s, size_t len)
 {
     size_t room = HOST_CONSOLE_SIZE - 1u - host_console_len;
     if (k_in_isr())
@@ -157,13 +158,14 @@ size_t k_console_write(const char *s, size_t len)
     return len;
 }
 
-void k_console_write_sync(const char *s, size_t len)
+static void host_console_write_sync(const char *s, size_t len)
 {
-    (void)k_console_write(s, len);
+    (void)host_console_write(s, len);
 }
 
 void host_console_clear(void)
 {
+    k_console_register(host_console_write, host_console_write_sync);
     host_console_writes_in_isr = 0;
     host_console_len = 0;
     host_console[0] = '\0';

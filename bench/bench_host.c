@@ -1,6 +1,6 @@
 /*
  * bsched-bench: one case of `make bench` on the host, to be run under
- * callgrind (bsched/bench/bench.py reads the inclusive instruction counts of
+ * callgrind (bench/bench.py reads the inclusive instruction counts of
  * bsched_init, bsched_fig7_start, bsched_fig7_step and bsched_step).
  *   bsched-bench N CYCLES
  * Prints "N maxpv perfect cycles loads sizeof(struct bsched)

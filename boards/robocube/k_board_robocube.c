@@ -1,7 +1,8 @@
 /*
  * Board support of the nanokernel on the RoboCube: implements the kernel's
- * board interface (kernel/include/k_board.h) with the drivers of this folder,
- * so the kernel itself depends on no driver.
+ * board interface (kernel/include/k_board.h) with the console and PIT
+ * drivers of this folder and registers the console writers with the kernel
+ * (k_console_register), so the kernel itself calls no driver and no board.
  *
  * Console output: threads put bytes into a ring; the DUART's TxRDYB
  * interrupt (level 5, vectored through IVR) moves them to the transmitter
@@ -9,21 +10,22 @@
  * full waits on a semaphore the interrupt posts; a handler (or code before
  * k_start) cannot wait, so its surplus is dropped and counted. LF goes out
  * as CR LF, as with the firmware's polled console. Fault reports use
- * k_console_write_sync: it drains the ring and sends by polling, with
- * interrupts masked, so they get out even when the system is wedged.
+ * k_console_write_sync, whose writer here drains the ring and sends by
+ * polling, with interrupts masked, so they get out even when the system is
+ * wedged. Until the ring is set up, the polled writer serves both.
  *
  * The DUART's other users (radio, binary inputs, motor direction bits)
  * share its interrupt, its write-only IMR and ACR, and its output port
- * through drivers/duart.h, implemented here beside the console.
+ * through boards/robocube/duart.h, implemented here beside the console.
  */
-#include "k_internal.h"
+#include "kernel.h"
 #include "k_board.h"
-#include "cpu.h"
-#include "mc68332.h"
-#include "drivers/mc68681.h"
-#include "drivers/duart.h"
-#include "drivers/duart_console.h"
-#include "drivers/pit.h"
+#include "kernel/arch/cpu32/cpu.h"
+#include "boards/robocube/mc68332.h"
+#include "boards/robocube/mc68681.h"
+#include "boards/robocube/duart.h"
+#include "boards/robocube/duart_console.h"
+#include "boards/robocube/pit.h"
 
 #define DUART_IMR_TXRDYB 0x10u
 #define DUART_ISR_TXRDYB 0x10u
@@ -82,7 +84,7 @@ static void k_duart_isr(void *arg)
     if ((pending & DUART_ISR_TXRDYB) != 0u) {
         if (k_console_feed() && !k_console_lf_held)
             k_duart_set_imr((uint8_t)(k_duart_imr & ~DUART_IMR_TXRDYB));
-        if (k_waitq_first(&k_console_space.wq) != NULL)
+        if (k_sem_has_waiter(&k_console_space))
             (void)k_sem_post(&k_console_space);
     }
     for (i = 0; i < DUART_MAX_HANDLERS; i++) {
@@ -177,10 +179,10 @@ int duart_ct_baud_clock(uint16_t preload)
     return 0;
 }
 
-size_t k_console_write(const char *s, size_t len)
+static size_t k_board_console_write(const char *s, size_t len)
 {
     size_t done = 0;
-    int can_wait = k_kernel.started && !k_in_isr();
+    int can_wait = k_can_block();
     while (done < len) {
         uint32_t irq = k_arch_irq_save();
         int put = k_ring_put(&k_console_ring, (uint8_t)s[done]);
@@ -199,7 +201,7 @@ size_t k_console_write(const char *s, size_t len)
     return done;
 }
 
-void k_console_write_sync(const char *s, size_t len)
+static void k_board_console_write_sync(const char *s, size_t len)
 {
     uint32_t irq = k_arch_irq_save();
     while (!k_console_feed() || k_console_lf_held) {
@@ -237,6 +239,7 @@ static void k_board_pit_isr(void *arg)
 int k_board_init(void)
 {
     console_init(); /* channel B at CONSOLE_BAUD 8N1, all DUART interrupts masked */
+    k_console_register(NULL, console_write); /* the polled early writer */
     (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
     (void)k_sem_init(&k_console_space, 0, 1);
     k_console_lf_held = 0;
@@ -253,5 +256,6 @@ int k_board_init(void)
     if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK ||
         k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
+    k_console_register(k_board_console_write, k_board_console_write_sync);
     return pit_start(K_TICK_HZ, k_board_tick);
 }

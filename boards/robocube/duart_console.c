@@ -1,12 +1,13 @@
 /* Polled console on MC68681 channel B; see duart_console.h. */
 #include "duart_console.h"
 
-#include "drivers/mc68681.h"
+#include "boards/robocube/mc68681.h"
 #include "kernel/lib/kprintf.h"
 
 /*
  * Baud clock, chosen at build time by CONSOLE_BAUD (duart_console.h):
- * 57600 (default, the CubeOS console rate) is not in the MC68681 baud-rate
+ * 38400 is the default (duart_console.h says why). 57600, the CubeOS
+ * console rate, is not in the MC68681 baud-rate
  * tables, so the counter/timer in timer mode divides the 3.6864 MHz crystal
  * by 2 x CTUR:CTLR = 4 to 921600 Hz = 16 x 57600, and CSRB = 0xDD takes it
  * for receive and transmit. 38400 and 9600 come from baud-rate set 1

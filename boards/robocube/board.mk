@@ -1,7 +1,9 @@
-# RoboCube reference firmware (MC68332 / CPU32): the startup and base objects
-# every image links, the fault test images and the firmware-boot suite. The
-# images themselves (apps/NAME/), `make firmware` and `make run` are in
-# apps/apps.mk.
+# The RoboCube board (MC68332 / CPU32): how every firmware image is compiled
+# and linked (flags, linker script), the startup and base objects every image
+# links, the kernel's board support (BOARD_KERNEL_SRCS, compiled with the
+# kernel at each image's tick rate), the fault test images and the
+# firmware-boot suite. The images themselves (apps/NAME/), `make firmware`
+# and `make run` are in apps/apps.mk.
 #
 #   make check-firmware-boot            boot and fault tests on the emulator
 
@@ -25,12 +27,11 @@ FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROO
                 -nostdinc -isystem $(shell $(CROSS_CC) -print-file-name=include) \
                 -isystem $(ROOT)/posix/include -isystem $(NEWLIB)/include $(FW_POSIX_FEATURES)
 FW_ASFLAGS   := -mcpu=cpu32 -g -I$(ROOT)/kernel/arch/cpu32 -MMD -MP
-FW_LDSCRIPT  := kernel/arch/cpu32/robocube.ld
+FW_LDSCRIPT  := boards/robocube/robocube.ld
 FW_LDFLAGS   := -mcpu=cpu32 -nostdlib -T $(FW_LDSCRIPT) -Wl,--gc-sections -Wl,--build-id=none
 CROSS_SIZE   ?= m68k-linux-gnu-size
 CROSS_OBJCOPY ?= m68k-linux-gnu-objcopy
 CROSS_AR     ?= m68k-linux-gnu-ar
-QEMU_M68K    ?= $(BUILD)/emu/qemu-system-m68k
 # Virtual time from the instruction count alone: 2^8 ns = 256 ns per
 # instruction (4.3 clocks at 16.78 MHz, an assumed CPU32 average, not measured),
 # so the PIT, the DUART timer and the program advance in a fixed ratio. With
@@ -41,10 +42,14 @@ QEMU_M68K    ?= $(BUILD)/emu/qemu-system-m68k
 # Now a run gives the same output, tick for tick, on a loaded host as on an idle one.
 FW_ICOUNT    := shift=8,sleep=off
 
-# Startup, drivers, library: every firmware image links these.
-FW_BASE_SRCS := kernel/arch/cpu32/start.S kernel/arch/cpu32/exceptions.c \
+# Startup, fault reporter, formatter, the board's console and PIT, bsched.c:
+# every firmware image links these (with or without the kernel).
+FW_BASE_SRCS := boards/robocube/start.S kernel/arch/cpu32/exceptions.c \
                 kernel/lib/kprintf.c kernel/lib/kstring.c \
-                drivers/duart_console.c drivers/pit.c drivers/led.c bsched/bsched.c
+                boards/robocube/duart_console.c boards/robocube/pit.c bsched/bsched.c
+# The kernel's board interface (kernel/include/k_board.h) on this board: PIT
+# tick, interrupt-driven console; linked with the kernel (kernel/kernel.mk).
+BOARD_KERNEL_SRCS := boards/robocube/k_board_robocube.c
 FW_BASE_OBJS := $(patsubst %,$(FW_BUILD)/obj/%.o,$(FW_BASE_SRCS))
 
 FW_FAULT_KINDS := unmapped flashwrite illegal zerodivide

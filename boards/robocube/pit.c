@@ -3,8 +3,8 @@
 
 #include <stddef.h>
 
-#include "cpu.h"
-#include "mc68332.h"
+#include "kernel/arch/cpu32/cpu.h"
+#include "boards/robocube/mc68332.h"
 
 static volatile uint32_t tick_count;
 static pit_tick_hook_fn tick_hook;

@@ -166,7 +166,7 @@ def main():
     ap.add_argument("--out", required=True)
     args = ap.parse_args()
     elf = Path(args.elf)
-    objs = [elf.parent / "cpu32/bsched/bsched.c.o", elf.parent / "cpu32/bsched/ref/bsched_fig7.c.o"]
+    objs = [elf.parent / "cpu32/bsched/bsched.c.o", elf.parent / "cpu32/bsched/proofs/ref/bsched_fig7.c.o"]
     lines = [f"# instructions per minor cycle over {args.cycles} cycles from cycle 0; "
              f"state at BSCHED_MAX_PROCS = {BENCH_PROCS}; ratio = fig7 / bsched_step"]
     ok = True

@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "bench_core.h"
-#include "drivers/duart_console.h"
+#include "boards/robocube/duart_console.h"
 #include "kernel/lib/kprintf.h"
 
 #ifndef BENCH_CYCLES

@@ -6,7 +6,7 @@
  * draws pv uniformly from 3..12 with a fixed linear congruential generator
  * (the distribution of the speed goals' figures: about U = 0.25 N / 10 processes due
  * per cycle, 6.4 at N = 256, 102 at N = 4096). Each case plans the set with
- * bsched_init, starts Fig. 7's reference engine (bsched/ref/bsched_fig7.c) on
+ * bsched_init, starts Fig. 7's reference engine (bsched/proofs/ref/bsched_fig7.c) on
  * the plan and runs the same `cycles` minor cycles with Fig. 7
  * (bsched_fig7_step) and with the library's bsched_step. The two are checked
  * equal cycle by cycle (a checksum of every ran[] list), outside the measured

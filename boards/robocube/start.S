@@ -1,7 +1,7 @@
 /*
  * Reset entry, vector table and exception entry of the RoboCube firmware
  * (MC68332 / CPU32, RoboCube v2.0 memory map: see emu/README.md and
- * kernel/arch/cpu32/robocube.ld).
+ * boards/robocube/robocube.ld).
  *
  * At reset CSBOOT maps the flash at address 0 and nothing else is mapped;
  * the CPU takes SSP and PC from flash offsets 0 and 4. The reset code

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""The layering test (suite `layering`): dependencies between the top-level
+folders point down only, and no two folders depend on each other.
+
+It reads every #include "..." of the C and assembly sources and every import of
+the Python files, resolves each to a file of this repository and so to the
+top-level folder that holds it, and fails on any dependency the graph below
+does not allow: an upward one, or one that closes a circle. The graph is
+written here and only here.
+
+What is not read: tests (a folder's tests/ may use the layers above the code
+they test, e.g. a kernel test image on the board), emu/hw (QEMU's own device
+sources, built inside QEMU's tree: their "cpu.h" is QEMU's), and includes
+with <...> (the compiler's, the C library's, cmocka's).
+
+    assure/layering.py [--root DIR] [--results FILE]
+Prints one line per violation and 'layering: N passed, M failed'; exit status
+1 when any fails, 2 on bad usage.
+"""
+import argparse
+import ast
+import os
+import re
+import sys
+
+# Direct dependencies each top-level folder may have; any path along them is
+# allowed too (apps may use the kernel through drivers, or directly).
+#   firmware:  apps -> pdl, net -> drivers -> boards -> kernel (its CPU port
+#              inside it) -> bsched; bsched depends on nothing; apps may use
+#              the POSIX layer (posix -> kernel)
+#   host side: emu (the board model and the world) and tools stand beside it;
+#              bench measures bsched on the host and on the board; assure and
+#              ci check everything.
+ALLOWED = {
+    "bsched": set(),
+    "kernel": {"bsched"},
+    "boards": {"kernel"},
+    "drivers": {"boards"},
+    "net": {"drivers"},
+    "pdl": {"drivers"},
+    "posix": {"kernel"},
+    "apps": {"pdl", "net", "posix", "emu"},
+    "emu": {"tools"},
+    "tools": {"bsched"},
+    "bench": {"boards"},
+    "assure": {"apps", "bench"},
+    "ci": set(),
+}
+
+# Where a quoted include is looked for after the including file's folder and
+# the root: the -I folders of the make files.
+INCLUDE_DIRS = ["kernel/include", "kernel", "kernel/arch/cpu32", "bsched", "bsched/proofs/ref",
+                "net", "apps/ecosystem"]
+SKIP_DIRS = {"build", ".git", "__pycache__", "node_modules"}
+C_EXT = (".c", ".h", ".S")
+INCLUDE_RE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def reachable(graph):
+    """Every folder each folder may depend on (transitive closure)."""
+    out = {}
+    for a in graph:
+        seen, todo = set(), list(graph[a])
+        while todo:
+            b = todo.pop()
+            if b not in seen:
+                seen.add(b)
+                todo.extend(graph.get(b, ()))
+        out[a] = seen
+    return out
+
+
+def skipped(rel):
+    parts = rel.split("/")
+    return "tests" in parts or rel.startswith("emu/hw/") or rel.startswith("emu/qemu-patches/")
+
+
+def files(root):
+    for d, dirs, names in os.walk(root):
+        dirs[:] = sorted(x for x in dirs if x not in SKIP_DIRS and not x.startswith("."))
+        for n in sorted(names):
+            rel = os.path.relpath(os.path.join(d, n), root)
+            if "/" in rel:
+                yield rel
+
+
+def resolve_include(root, rel, name):
+    for base in [os.path.dirname(rel), ""] + INCLUDE_DIRS:
+        cand = os.path.normpath(os.path.join(base, name))
+        if os.path.isfile(os.path.join(root, cand)):
+            return cand
+    return None
+
+
+def python_modules(root):
+    """Module name -> the repository files that define it (X.py or X/__init__.py)."""
+    mods = {}
+    for rel in files(root):
+        if rel.endswith(".py"):
+            name = os.path.basename(rel)[:-3]
+            if name == "__init__":
+                name = os.path.basename(os.path.dirname(rel))
+            mods.setdefault(name, []).append(rel)
+    return mods
+
+
+def resolve_import(rel, name, mods):
+    """The file a Python import names: its own folder's first, else the only one."""
+    first = name.split(".")[0]
+    cands = mods.get(first, [])
+    here = os.path.dirname(rel)
+    for c in cands:
+        if os.path.dirname(c) == here or os.path.dirname(os.path.dirname(c)) == here:
+            return c
+    return cands[0] if len(cands) == 1 else None
+
+
+def dependencies(root):
+    """(from file, to file) for every include and import that crosses top-level folders."""
+    mods = python_modules(root)
+    for rel in files(root):
+        if skipped(rel):
+            continue
+        targets = []
+        if rel.endswith(C_EXT):
+            with open(os.path.join(root, rel), errors="replace") as f:
+                text = f.read()
+            targets = [resolve_include(root, rel, n) for n in INCLUDE_RE.findall(text)]
+        elif rel.endswith(".py"):
+            with open(os.path.join(root, rel)) as f:
+                try:
+                    tree = ast.parse(f.read(), rel)
+                except SyntaxError as e:
+                    yield rel, None, "does not parse: %s" % e
+                    continue
+            for node in ast.walk(tree):
+                if isinstance(node, ast.Import):
+                    targets += [resolve_import(rel, a.name, mods) for a in node.names]
+                elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+                    targets.append(resolve_import(rel, node.module, mods))
+        for t in targets:
+            if t is not None and t.split("/")[0] != rel.split("/")[0]:
+                yield rel, t, None
+
+
+def check(root):
+    may = reachable(ALLOWED)
+    # The graph itself must have no circle.
+    failures = ["the allowed graph has a circle through %s" % a for a in ALLOWED if a in may[a]]
+    edges = {}
+    passed = 0
+    for src, dst, err in dependencies(root):
+        if err:
+            failures.append("%s %s" % (src, err))
+            continue
+        a, b = src.split("/")[0], dst.split("/")[0]
+        edges.setdefault((a, b), (src, dst))
+    for (a, b), (src, dst) in sorted(edges.items()):
+        if a not in ALLOWED:
+            failures.append("%s -> %s: folder %s/ is not in the layering graph (assure/layering.py)" % (src, dst, a))
+        elif b not in may[a]:
+            kind = "circular" if a in may.get(b, set()) else "upward or sideways"
+            failures.append("%s -> %s: %s dependency %s -> %s (allowed from %s: %s)"
+                            % (src, dst, kind, a, b, a, ", ".join(sorted(may[a])) or "nothing"))
+        else:
+            passed += 1
+    return passed, failures, edges
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    ap.add_argument("--results", help="write 'P passed, F failed' here")
+    a = ap.parse_args()
+    if not os.path.isdir(a.root):
+        ap.error("--root %s: no such folder" % a.root)
+    passed, failures, edges = check(a.root)
+    for (x, y), (src, dst) in sorted(edges.items()):
+        print("  %-7s -> %-7s e.g. %s -> %s" % (x, y, src, dst))
+    for f in failures:
+        print("FAILED: " + f)
+    print("layering: %d passed, %d failed (%d folder-to-folder dependencies)" % (passed, len(failures), len(edges)))
+    if a.results:
+        os.makedirs(os.path.dirname(a.results), exist_ok=True)
+        with open(a.results, "w") as f:
+            f.write("%d passed, %d failed\n" % (passed, len(failures)))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
