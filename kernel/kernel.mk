@@ -37,7 +37,7 @@ check-kernel-unit: $(K_HOST_TESTS)
 	@RESULTS=$(RESULTS) ci/cmocka-suite kernel-unit $(K_HOST_TESTS)
 
 # ---- CPU32 target ----
-# -fno-store-merging as for every firmware image (kernel/firmware.mk): GCC 12
+# -fno-store-merging as for every firmware image (boards/robocube/board.mk): GCC 12
 # merges adjacent byte stores into a word store at an odd address, an address
 # error on the CPU32 (it did so for two byte fields of struct k_thread).
 K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -fno-store-merging -ffunction-sections \

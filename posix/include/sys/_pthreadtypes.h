@@ -1,7 +1,7 @@
 /*
  * The pthread types of the CubeOS POSIX layer (posix/). newlib's
  * <sys/types.h> includes this file; it comes first on the firmware's include
- * path (kernel/firmware.mk), in place of newlib's own, whose types are
+ * path (boards/robocube/board.mk), in place of newlib's own, whose types are
  * handles for another system's thread library.
  *
  * Each object embeds the nanokernel object it stands for, so a call is the
