@@ -100,11 +100,11 @@ $(foreach a,$(APPS),$(eval $(call app_template,$(a))))
 
 # A program on the PDL host runtime, for the arena's host mode (make run
 # APP=NAME HOST=1): its sources with main renamed, the arena's driver of main
-# and the cycles (emu/world/host/pdl_app_host.c) and the host runtime, as one
+# and the cycles (pdl/host/pdl_app_host.c) and the host runtime, as one
 # shared library the arena loads (emu/world/hostmode.py). PDL_HOST is defined,
 # for the few lines a program keeps for the board (pdl/pdl_board.h).
 app_host_lib = $(BUILD)/world/apps/$(1)/lib$(1)_host.so
-APP_HOST_DRIVER := emu/world/host/pdl_app_host.c
+APP_HOST_DRIVER := pdl/host/pdl_app_host.c
 define app_host_template
 $$(call app_host_lib,$(1)): $$($(1)_SRCS) $$(wildcard apps/$(1)/*.h) $$(APP_HOST_DRIVER) $$(PDL_HOST_SRCS) $$(PDL_HEADERS)
 	@mkdir -p $$(@D)

@@ -5,7 +5,7 @@ behaviours: minutes of virtual time in seconds.
 
 Two kinds of library: the ecosystem's (apps/ecosystem/host/eco_host.c, which also
 reports its behaviours' contributions for the live view) and any PDL program
-with an ordinary main (emu/world/host/pdl_app_host.c, apps/apps.mk's
+with an ordinary main (pdl/host/pdl_app_host.c, apps/apps.mk's
 app_host_lib): the world gives it every analog input and the DUART input port
 and takes motors 0..2, as the board's ports (wiring: pdl/robot.h)."""
 

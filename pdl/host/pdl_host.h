@@ -46,7 +46,7 @@ int pdl_host_started(void);
 uint64_t pdl_host_elapsed_us(void);
 /* What pdl_sleep_ms does on the host: by default it runs the cycles that
  * start within the interval; a simulator that drives the cycles itself (the
- * arena, emu/world/host/pdl_app_host.c) hands main's waits to this hook.
+ * arena, pdl/host/pdl_app_host.c) hands main's waits to this hook.
  * NULL restores the default. */
 void pdl_host_set_sleep_hook(int (*hook)(uint32_t ms));
 
