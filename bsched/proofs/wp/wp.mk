@@ -4,7 +4,7 @@
 #   make check-wp-negative     the mutant (-DBSCHED_MUTANT_NO_REVERSE) must fail
 #   make wp-session            race every goal and record its prover (session.tsv)
 #   make wp-replay             every goal re-checked from the committed WP cache
-#                              (bsched/proofs/wp/cache/), no prover run (~1 min)
+#                              (bsched/proofs/wp/cache/), no prover run (~500 s)
 #   make check-wp-replay       the same as a check suite (make check runs it)
 # Deterministic: fixed prover list, timeout, memory limit (why3.conf) and -wp-par.
 
@@ -110,8 +110,9 @@ WP_FILE_ref  = bsched/ref/bsched_fig7.c
 WP_SPEC     += bsched/spec/bsched_fig7.h
 WP_SOURCES  += bsched/ref/bsched_fig7.c bsched/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
 
-# make check re-checks every goal from the committed cache (suite wp-replay, below,
-# ~1 min) in place of the full proof (suite wp, ~450-700 s of make check's 30 min);
+# make check re-checks every goal from the committed cache (suite wp-replay, below:
+# 509 s wall, 702 s CPU, as long as the proof, but no verdict lost to a loaded machine)
+# in place of the full proof (suite wp, 450-930 s);
 # the full proof runs in make prove and make nightly. The negative check stays.
 CHECKS += wp-negative
 PROOF_CHECKS += wp-negative
@@ -187,8 +188,8 @@ wp-replay-run:
 # Suite wp-replay (in make check): the replay, and that it fails when the cache does
 # not cover a goal (the replay of one function whose postcondition is changed in a
 # copy of bsched.c; wp_cache_check.sh).
-# Without a committed cache (before the first make prove of a new checkout of this
-# rule), make check runs the full proof instead, so the goals are always checked.
+# Without a committed cache (wp/cache/goals.tsv, written by make prove), make check
+# runs the full proof instead, so the goals are always checked.
 ifneq ($(wildcard $(WP_CACHE_DIR)/goals.tsv),)
 CHECKS += wp-replay
 PROOF_CHECKS += wp-replay
