@@ -2,7 +2,7 @@
 
 BSCHED_CFLAGS := $(HOST_CFLAGS) -I$(ROOT)/bsched
 # The CLI plans sets up to the library's largest capacity.
-PLAN_CFLAGS   := $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=65535
+PLAN_CFLAGS   := $(BSCHED_CFLAGS) -DBSCHED_MAX_PROCS=65535 -DBSCHED_PLAN_SOURCE=\"$(ROOT)/bsched\"
 CROSS_CC      ?= m68k-linux-gnu-gcc
 CROSS_CFLAGS  := -std=c99 -mcpu=cpu32 -Os -ffreestanding -nostdlib -Wall -Wextra -Wpedantic -Wconversion -Werror
 
@@ -36,7 +36,8 @@ check-bsched-unit: $(BUILD)/tests/test_bsched
 	@$(SETUP) base
 	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-unit $(BUILD)/tests/test_bsched
 
+# Its --certify tests run CBMC (ci/setup cbmc) on small sets.
 check-bsched-plan: $(BUILD)/bin/bsched-plan
-	@$(SETUP) base
+	@$(SETUP) base cbmc
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests
 

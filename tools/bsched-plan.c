@@ -4,7 +4,13 @@
  * also draws the major cycle as an SVG chart into FILE.
  *
  *   bsched-plan [--json] [--svg FILE] PV [PV ...]
+ *   bsched-plan --certify FILE [--source DIR] [--time-limit S] PV [PV ...]
+ *   bsched-plan --recheck FILE [--source DIR] [--time-limit S]
  *   bsched-plan --help
+ *
+ * --certify has CBMC check the set's whole major cycle on bsched.c (certify_run
+ * below) and writes a certificate to FILE; --recheck re-runs the check of a
+ * certificate and compares (exit 0 only when it is reproduced and certified).
  *
  * Exit status 0 on success, 2 on bad input (one line on stderr, nothing on stdout).
  * FILE is replaced only if it is a regular file (or does not exist yet); the
@@ -16,8 +22,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "bsched.h"
@@ -52,9 +62,17 @@ static void print_help(void)
            "  --json      one JSON object instead of the tables\n"
            "  --svg FILE  also draw the major cycle as an SVG chart into FILE (replaces FILE\n"
            "              only if it is a regular file or does not exist)\n"
+           "  --certify FILE  have CBMC check the whole major cycle on bsched.c (every cycle:\n"
+           "              period exactly 2^pv, load within floor(U)..ceil(U) and at most\n"
+           "              perfect, no idle cycle while U >= 1, the same schedule as Fig. 7's\n"
+           "              reference engine) and write a certificate to FILE (CBMC's log: FILE.log)\n"
+           "  --recheck FILE  re-run the check of certificate FILE and compare\n"
+           "  --source DIR    the bsched folder to certify (bsched.c, bsched.h, ref/)\n"
+           "  --time-limit S  stop CBMC after S seconds (default 3600): not certified\n"
            "  --          the arguments after it are priority values\n"
            "  --help      this text\n"
-           "Exit status: 0 done, 2 bad input or FILE not written (one line on stderr).\n",
+           "Exit status: 0 done (certified), 1 not certified, 2 bad input or FILE not written\n"
+           "(one line on stderr).\n",
            PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS);
 }
 
@@ -332,10 +350,511 @@ static int write_svg_file(const char *path)
     return 0;
 }
 
+/* ------------------------------------------------------------------------
+ * --certify and --recheck: a CBMC certificate for one priority set.
+ *
+ * bsched-plan writes a harness (CERTIFY_HARNESS below, with the set as a constant
+ * array) into a fresh temporary folder and runs CBMC on it with bsched.c and Fig. 7's
+ * reference engine (ref/bsched_fig7.c), all of CBMC's property classes on, every
+ * loop unwound to its end (--unwinding-assertions: a bound that is too small fails).
+ * The set is constant, so CBMC runs the real code symbolically along the one path
+ * it takes, through every minor cycle of the major cycle, and checks every assertion
+ * and every overflow, bounds and shift on that path: exhaustive for this set. Its
+ * cost grows as 2^maxpv x N (Fig. 7's engine counts every wait down each cycle).
+ */
+#ifndef BSCHED_PLAN_SOURCE
+#define BSCHED_PLAN_SOURCE "bsched"
+#endif
+#define CERT_FORMAT "bsched-plan certificate 1"
+#define CERT_DEFAULT_LIMIT 3600L
+#define CERT_TEXT_MAX 65536u
+
+static const char CERTIFY_HARNESS[] =
+    "void harness(void)\n"
+    "{\n"
+    "    static struct bsched s, plan, before;\n"
+    "    static struct bsched_fig7 r;\n"
+    "    static uint32_t runs[CERT_N], first[CERT_N], last[CERT_N];\n"
+    "    uint64_t area = 0u;\n"
+    "    uint32_t cycles, lo, hi, t, i;\n"
+    "    int32_t n, m, k;\n"
+    "    __CPROVER_assert(bsched_init(&s, cert_pv, CERT_N) == BSCHED_OK, \"init: the set is accepted\");\n"
+    "    plan = s;\n"
+    "    before = s;\n"
+    "    __CPROVER_assert(bsched_fig7_start(&r, &plan) == BSCHED_OK, \"fig7: the reference engine starts on the plan\");\n"
+    "    cycles = (uint32_t)1u << s.maxpv;\n"
+    "    /* U * 2^maxpv, exactly: floor(U) and ceil(U) from it */\n"
+    "    for (i = 0u; i < CERT_N; i++) { area += (uint64_t)(cycles >> cert_pv[i]); }\n"
+    "    lo = (uint32_t)(area >> s.maxpv);\n"
+    "    hi = (uint32_t)((area + cycles - 1u) >> s.maxpv);\n"
+    "    for (t = 0u; t < cycles; t++) {\n"
+    "        n = bsched_step(&s);\n"
+    "        m = bsched_fig7_step(&r, &plan);\n"
+    "        __CPROVER_assert(n >= 0 && n == m && s.ran_count == r.ran_count,\n"
+    "                         \"fig7: as many processes as Fig. 7's reference engine in every cycle\");\n"
+    "        for (k = 0; k < n; k++) {\n"
+    "            uint16_t p = s.ran[k];\n"
+    "            __CPROVER_assert(p == r.ran[k], \"fig7: the same processes in the same order as Fig. 7 in every cycle\");\n"
+    "            __CPROVER_assert(p < CERT_N, \"period: a process index\");\n"
+    "            if (runs[p] == 0u) {\n"
+    "                __CPROVER_assert(t < ((uint32_t)1u << cert_pv[p]), \"period: the first run within 2^pv cycles\");\n"
+    "                first[p] = t;\n"
+    "            } else {\n"
+    "                __CPROVER_assert(t - last[p] == ((uint32_t)1u << cert_pv[p]), \"period: runs exactly 2^pv cycles apart\");\n"
+    "            }\n"
+    "            last[p] = t;\n"
+    "            runs[p]++;\n"
+    "        }\n"
+    "        __CPROVER_assert((uint32_t)n >= lo, \"load: at least floor(U) processes in every cycle\");\n"
+    "        __CPROVER_assert((uint32_t)n <= hi, \"load: at most ceil(U) processes in every cycle\");\n"
+    "        __CPROVER_assert((uint32_t)n <= s.perfect, \"load: at most perfect processes in every cycle\");\n"
+    "        __CPROVER_assert(area < cycles || n > 0, \"idle: no idle cycle while U >= 1\");\n"
+    "    }\n"
+    "    for (i = 0u; i < CERT_N; i++) {\n"
+    "        __CPROVER_assert(runs[i] == cycles >> cert_pv[i], \"period: 2^(maxpv - pv) runs in the major cycle\");\n"
+    "        __CPROVER_assert(first[i] + cycles - last[i] == ((uint32_t)1u << cert_pv[i]),\n"
+    "                         \"period: 2^pv cycles from the last run to the first of the next major cycle\");\n"
+    "    }\n"
+    "    __CPROVER_assert(s.cycle == before.cycle && s.reversed == before.reversed && r.cycle == 0,\n"
+    "                     \"repeat: the major cycle ends where it began\");\n"
+    "}\n";
+
+/* What one check found; the certificate's lines. */
+struct certificate {
+    char set[CERT_TEXT_MAX];
+    char bsched_sha[80], fig7_sha[80], harness_sha[80];
+    char cbmc[PATH_MAX + 32];
+    unsigned long count, maxpv, properties, failed;
+    char verdict[64];
+    double seconds;
+};
+
+static int cert_error(const char *what, const char *arg)
+{
+    fprintf(stderr, "bsched-plan: %s '%s'\n", what, arg);
+    return 2;
+}
+
+/* Runs argv with stdout (and stderr) into the file out, or captured into buf when
+ * out is NULL; waits at most limit seconds (0: no limit), then kills the process
+ * group. Returns the exit status, -1 if it could not run, -2 on the time limit. */
+static int run_command(char *const argv[], const char *out, char *buf, size_t size, long limit)
+{
+    int pipefd[2] = {-1, -1};
+    pid_t pid;
+    int status = 0;
+    time_t start = time(NULL);
+    size_t used = 0;
+
+    if (out == NULL && pipe(pipefd) != 0) {
+        return -1;
+    }
+    pid = fork();
+    if (pid < 0) {
+        return -1;
+    }
+    if (pid == 0) {
+        int fd = out != NULL ? open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644) : pipefd[1];
+        (void)setpgid(0, 0);
+        if (fd < 0) {
+            _exit(127);
+        }
+        (void)dup2(fd, 1);
+        (void)dup2(fd, 2);
+        if (out == NULL) {
+            close(pipefd[0]);
+        }
+        execvp(argv[0], argv);
+        _exit(127);
+    }
+    (void)setpgid(pid, pid);
+    if (out == NULL) {
+        ssize_t got;
+        close(pipefd[1]);
+        while ((got = read(pipefd[0], buf + used, size - 1u - used)) > 0) {
+            used += (size_t)got;
+            if (used + 1u >= size) {
+                break;
+            }
+        }
+        buf[used] = '\0';
+        close(pipefd[0]);
+    }
+    for (;;) {
+        pid_t w = waitpid(pid, &status, WNOHANG);
+        if (w == pid) {
+            break;
+        }
+        if (w < 0) {
+            return -1;
+        }
+        if (limit > 0 && time(NULL) - start >= limit) {
+            (void)kill(-pid, SIGKILL);
+            (void)waitpid(pid, &status, 0);
+            return -2;
+        }
+        {
+            struct timespec pause = {0, 100000000L};
+            (void)nanosleep(&pause, NULL);
+        }
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/* The sha256 of a file (sha256sum), or "" when it cannot be read. */
+static void file_sha256(const char *path, char *out, size_t size)
+{
+    char buf[512];
+    char *argv[] = {"sha256sum", "--", (char *)path, NULL};
+    out[0] = '\0';
+    if (run_command(argv, NULL, buf, sizeof buf, 60) == 0 && strlen(buf) >= 64u && size > 64u) {
+        memcpy(out, buf, 64);
+        out[64] = '\0';
+    }
+}
+
+/* The CBMC to run: $CBMC, else ci/setup cbmc's under $BSCHED_TOOLS (or the XDG
+ * cache), else cbmc on PATH. */
+static void find_cbmc(char *out, size_t size)
+{
+    const char *env = getenv("CBMC");
+    const char *tools = getenv("BSCHED_TOOLS");
+    const char *xdg = getenv("XDG_CACHE_HOME");
+    const char *home = getenv("HOME");
+    if (env != NULL && env[0] != '\0') {
+        snprintf(out, size, "%s", env);
+        return;
+    }
+    if (tools != NULL && tools[0] != '\0') {
+        snprintf(out, size, "%s/cbmc/bin/cbmc", tools);
+    } else if (xdg != NULL && xdg[0] != '\0') {
+        snprintf(out, size, "%s/bsched/cbmc/bin/cbmc", xdg);
+    } else {
+        snprintf(out, size, "%s/.cache/bsched/cbmc/bin/cbmc", home != NULL ? home : "");
+    }
+    if (access(out, X_OK) != 0) {
+        snprintf(out, size, "cbmc");
+    }
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec / 1e9;
+}
+
+/* Counts CBMC's result lines ("[id] line ... description: SUCCESS" / ": FAILURE"). */
+static void count_results(const char *log, unsigned long *success, unsigned long *failure, int *verified)
+{
+    FILE *f = fopen(log, "r");
+    static char line[8192];
+    *success = *failure = 0;
+    *verified = 0;
+    if (f == NULL) {
+        return;
+    }
+    while (fgets(line, sizeof line, f) != NULL) {
+        size_t len = strlen(line);
+        while (len > 0u && (line[len - 1u] == '\n' || line[len - 1u] == '\r')) {
+            line[--len] = '\0';
+        }
+        if (line[0] == '[' && len > 9u && strcmp(line + len - 9u, ": SUCCESS") == 0) {
+            (*success)++;
+        } else if (line[0] == '[' && len > 9u && strcmp(line + len - 9u, ": FAILURE") == 0) {
+            (*failure)++;
+        } else if (strcmp(line, "VERIFICATION SUCCESSFUL") == 0) {
+            *verified = 1;
+        }
+    }
+    fclose(f);
+}
+
+/* The check itself: fills c (set, digests, versions, verdict, time); CBMC's log
+ * goes to log_path. Returns 0 certified, 1 not certified. */
+static int certify_run(const char *source, const uint8_t *set, size_t count, unsigned long maxpv,
+                       long limit, const char *log_path, struct certificate *c)
+{
+    char dir[] = "/tmp/bsched-certify.XXXXXX";
+    char harness[PATH_MAX], lib[PATH_MAX], ref[PATH_MAX], incl[PATH_MAX + 4], incl_ref[PATH_MAX + 8];
+    char cbmc[PATH_MAX], capacity[48], unwind[32], version[256];
+    size_t i, used = 0;
+    unsigned long success = 0, failure = 0, bound;
+    int verified = 0, rc;
+    double start;
+    FILE *h;
+
+    memset(c, 0, sizeof *c);
+    for (i = 0; i < count; i++) {
+        int w = snprintf(c->set + used, sizeof c->set - used, "%s%u", i ? " " : "", (unsigned)set[i]);
+        used += (size_t)w;
+    }
+    c->count = (unsigned long)count;
+    c->maxpv = maxpv;
+    snprintf(lib, sizeof lib, "%s/bsched.c", source);
+    snprintf(ref, sizeof ref, "%s/ref/bsched_fig7.c", source);
+    file_sha256(lib, c->bsched_sha, sizeof c->bsched_sha);
+    file_sha256(ref, c->fig7_sha, sizeof c->fig7_sha);
+    find_cbmc(cbmc, sizeof cbmc);
+    {
+        char *argv[] = {cbmc, "--version", NULL};
+        if (run_command(argv, NULL, version, sizeof version, 60) == 0) {
+            version[strcspn(version, "\r\n")] = '\0';
+            snprintf(c->cbmc, sizeof c->cbmc, "%s", version);
+        } else {
+            snprintf(c->cbmc, sizeof c->cbmc, "not found (%s)", cbmc);
+        }
+    }
+    if (c->bsched_sha[0] == '\0' || c->fig7_sha[0] == '\0') {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c or ref/bsched_fig7.c");
+        fprintf(stderr, "bsched-plan: cannot read %s or %s\n", lib, ref);
+        return 1;
+    }
+    if (mkdtemp(dir) == NULL) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no temporary folder");
+        return 1;
+    }
+    snprintf(harness, sizeof harness, "%s/certify_harness.c", dir);
+    h = fopen(harness, "w");
+    if (h == NULL) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: harness not written");
+        return 1;
+    }
+    fprintf(h, "/* Written by bsched-plan --certify for the set: %s */\n"
+               "#include \"bsched.h\"\n#include \"bsched_fig7.h\"\n#define CERT_N %lu\n"
+               "static const uint8_t cert_pv[CERT_N] = {", c->set, (unsigned long)count);
+    for (i = 0; i < count; i++) {
+        fprintf(h, "%s%u", i ? ", " : "", (unsigned)set[i]);
+    }
+    fprintf(h, "};\n%s", CERTIFY_HARNESS);
+    if (fclose(h) != 0) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: harness not written");
+        return 1;
+    }
+    file_sha256(harness, c->harness_sha, sizeof c->harness_sha);
+    /* Every loop runs to its end: the longest is the major cycle (2^maxpv) or a walk
+     * over the processes (count) or the classes (32). */
+    bound = (1ul << maxpv) > count ? (1ul << maxpv) : (unsigned long)count;
+    bound = (bound > 32ul ? bound : 32ul) + 2ul;
+    snprintf(capacity, sizeof capacity, "-DBSCHED_MAX_PROCS=%lu", (unsigned long)count);
+    snprintf(unwind, sizeof unwind, "%lu", bound);
+    snprintf(incl, sizeof incl, "-I%s", source);
+    snprintf(incl_ref, sizeof incl_ref, "-I%s/ref", source);
+    {
+        char *argv[] = {cbmc, "--function", "harness", capacity, incl, incl_ref, harness, lib, ref,
+                        "--bounds-check", "--pointer-check", "--div-by-zero-check",
+                        "--signed-overflow-check", "--unsigned-overflow-check", "--conversion-check",
+                        "--undefined-shift-check", "--pointer-overflow-check", "--unwinding-assertions",
+                        "--unwind", unwind, "--trace", NULL};
+        start = now_seconds();
+        rc = run_command(argv, log_path, NULL, 0, limit);
+        c->seconds = now_seconds() - start;
+    }
+    unlink(harness);
+    rmdir(dir);
+    count_results(log_path, &success, &failure, &verified);
+    c->properties = success + failure;
+    c->failed = failure;
+    if (rc == 0 && verified && failure == 0 && success > 0) {
+        snprintf(c->verdict, sizeof c->verdict, "CERTIFIED");
+        return 0;
+    }
+    if (rc == -2) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: time limit of %ld s", limit);
+    } else if (failure > 0) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: %lu properties fail", failure);
+    } else {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: cbmc exited %d", rc);
+    }
+    return 1;
+}
+
+/* The certificate's text without its last line (its own digest). */
+static void certificate_body(const struct certificate *c, char *out, size_t size)
+{
+    snprintf(out, size,
+             CERT_FORMAT "\n"
+             "set: %s\n"
+             "processes: %lu\n"
+             "maxpv: %lu\n"
+             "bsched.c-sha256: %s\n"
+             "bsched_fig7.c-sha256: %s\n"
+             "harness-sha256: %s\n"
+             "cbmc: %s\n"
+             "solver: MiniSat (built into cbmc)\n"
+             "properties: %lu\n"
+             "failed: %lu\n"
+             "verdict: %s\n",
+             c->set, c->count, c->maxpv, c->bsched_sha, c->fig7_sha, c->harness_sha, c->cbmc,
+             c->properties, c->failed, c->verdict);
+}
+
+/* sha256 of a string, through a temporary file and sha256sum. */
+static void text_sha256(const char *text, char *out, size_t size)
+{
+    char path[] = "/tmp/bsched-certificate.XXXXXX";
+    int fd = mkstemp(path);
+    out[0] = '\0';
+    if (fd < 0) {
+        return;
+    }
+    if (write(fd, text, strlen(text)) == (ssize_t)strlen(text)) {
+        close(fd);
+        file_sha256(path, out, size);
+    } else {
+        close(fd);
+    }
+    unlink(path);
+}
+
+static int write_certificate(const char *path, const struct certificate *c)
+{
+    static char body[CERT_TEXT_MAX + 8192];
+    char digest[80];
+    FILE *f;
+    certificate_body(c, body, sizeof body);
+    text_sha256(body, digest, sizeof digest);
+    f = fopen(path, "w");
+    if (f == NULL) {
+        return svg_error(path, strerror(errno));
+    }
+    fprintf(f, "%sseconds: %.1f\ncertificate-sha256: %s\n", body, c->seconds, digest);
+    if (fclose(f) != 0) {
+        return svg_error(path, strerror(errno));
+    }
+    return 0;
+}
+
+static void print_certificate_summary(const char *path, const struct certificate *c)
+{
+    printf("%s: %lu processes, maxpv %lu, %lu properties, %s (%.1f s) -> %s\n",
+           c->verdict[0] == 'C' ? "certified" : "not certified", c->count, c->maxpv, c->properties,
+           c->verdict, c->seconds, path);
+}
+
+/* Reads the value of "key: value" from a certificate's text. */
+static int cert_field(const char *text, const char *key, char *out, size_t size)
+{
+    size_t klen = strlen(key);
+    const char *p = text;
+    while (p != NULL && *p != '\0') {
+        if (strncmp(p, key, klen) == 0 && p[klen] == ':' && p[klen + 1] == ' ') {
+            const char *v = p + klen + 2;
+            size_t len = strcspn(v, "\n");
+            if (len >= size) {
+                return -1;
+            }
+            memcpy(out, v, len);
+            out[len] = '\0';
+            return 0;
+        }
+        p = strchr(p, '\n');
+        if (p != NULL) {
+            p++;
+        }
+    }
+    return -1;
+}
+
+/* --recheck FILE: the certificate is intact (its digest), its set is re-checked
+ * with the same harness on the same sources and tools, and every line but the
+ * time must come out the same. */
+static int recheck(const char *path, const char *source, long limit)
+{
+    static char text[CERT_TEXT_MAX + 16384], body[CERT_TEXT_MAX + 8192], value[CERT_TEXT_MAX];
+    static struct certificate now;
+    static uint8_t set[BSCHED_MAX_PROCS];
+    char digest[80], stored[80], log_path[PATH_MAX];
+    FILE *f = fopen(path, "r");
+    size_t got, count = 0, cut;
+    unsigned long maxpv = 0;
+    char *p, *end, *last_line;
+    int differs = 0;
+    static const char *const keys[] = {"set", "processes", "maxpv", "bsched.c-sha256", "bsched_fig7.c-sha256",
+                                       "harness-sha256", "cbmc", "solver", "properties", "failed", "verdict"};
+    size_t k;
+
+    if (f == NULL) {
+        return cert_error("cannot read the certificate", path);
+    }
+    got = fread(text, 1, sizeof text - 1u, f);
+    fclose(f);
+    text[got] = '\0';
+    if (strncmp(text, CERT_FORMAT "\n", strlen(CERT_FORMAT) + 1u) != 0) {
+        return cert_error("not a bsched-plan certificate:", path);
+    }
+    /* Its own digest covers every line before "seconds:" (the time may differ). */
+    last_line = strstr(text, "\nseconds: ");
+    if (last_line == NULL || cert_field(text, "certificate-sha256", stored, sizeof stored) != 0) {
+        printf("recheck: FAILED: %s is corrupted (no seconds or certificate-sha256 line)\n", path);
+        return 1;
+    }
+    cut = (size_t)(last_line - text) + 1u;
+    memcpy(body, text, cut);
+    body[cut] = '\0';
+    text_sha256(body, digest, sizeof digest);
+    if (strcmp(digest, stored) != 0) {
+        printf("recheck: FAILED: %s is corrupted: its lines do not match its certificate-sha256\n", path);
+        return 1;
+    }
+    if (cert_field(text, "set", value, sizeof value) != 0) {
+        printf("recheck: FAILED: %s has no set\n", path);
+        return 1;
+    }
+    for (p = value; *p != '\0';) {
+        unsigned long v = strtoul(p, &end, 10);
+        if (end == p || v > PLAN_MAX_LISTED_PV || count >= BSCHED_MAX_PROCS) {
+            printf("recheck: FAILED: %s: the set is not a list of priority values\n", path);
+            return 1;
+        }
+        set[count++] = (uint8_t)v;
+        maxpv = v > maxpv ? v : maxpv;
+        p = end;
+        while (*p == ' ') {
+            p++;
+        }
+    }
+    if (count == 0) {
+        printf("recheck: FAILED: %s: the set is empty\n", path);
+        return 1;
+    }
+    snprintf(log_path, sizeof log_path, "%s.recheck.log", path);
+    (void)certify_run(source, set, count, maxpv, limit, log_path, &now);
+    certificate_body(&now, body, sizeof body);
+    for (k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        char was[CERT_TEXT_MAX], is[CERT_TEXT_MAX];
+        if (cert_field(text, keys[k], was, sizeof was) != 0) {
+            was[0] = '\0';
+        }
+        if (cert_field(body, keys[k], is, sizeof is) != 0) {
+            is[0] = '\0';
+        }
+        if (strcmp(was, is) != 0) {
+            printf("recheck: differs: %s: certificate '%s', now '%s'\n", keys[k], was, is);
+            differs = 1;
+        }
+    }
+    if (differs) {
+        printf("recheck: FAILED: the check of %s does not reproduce it (CBMC's log: %s)\n", path, log_path);
+        return 1;
+    }
+    if (strcmp(now.verdict, "CERTIFIED") != 0) {
+        printf("recheck: reproduced, but the set is %s (%s)\n", now.verdict, log_path);
+        return 1;
+    }
+    printf("recheck: OK: %s reproduced: %lu processes, %lu properties, CERTIFIED (%.1f s)\n", path,
+           now.count, now.properties, now.seconds);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int json = 0;
     const char *svg = NULL;
+    const char *certify = NULL;
+    const char *recheck_file = NULL;
+    const char *source = BSCHED_PLAN_SOURCE;
+    long limit = CERT_DEFAULT_LIMIT;
     size_t count = 0;
     int a;
     int32_t rc;
@@ -352,6 +871,34 @@ int main(int argc, char **argv)
         }
         if (!options_done && strcmp(arg, "--json") == 0) {
             json = 1;
+            continue;
+        }
+        if (!options_done && (strcmp(arg, "--certify") == 0 || strcmp(arg, "--recheck") == 0 ||
+                              strcmp(arg, "--source") == 0)) {
+            if (a + 1 >= argc || argv[a + 1][0] == '\0') {
+                return usage_error(strcmp(arg, "--source") == 0 ? "--source needs a folder"
+                                                                : "needs a certificate file name:", arg);
+            }
+            if (strcmp(arg, "--certify") == 0) {
+                certify = argv[++a];
+            } else if (strcmp(arg, "--recheck") == 0) {
+                recheck_file = argv[++a];
+            } else {
+                source = argv[++a];
+            }
+            continue;
+        }
+        if (!options_done && strcmp(arg, "--time-limit") == 0) {
+            char *rest;
+            if (a + 1 >= argc) {
+                return usage_error("--time-limit needs a number of seconds", arg);
+            }
+            errno = 0;
+            limit = strtol(argv[a + 1], &rest, 10);
+            if (argv[a + 1][0] < '0' || argv[a + 1][0] > '9' || *rest != '\0' || errno == ERANGE || limit < 1) {
+                return usage_error("--time-limit is not a whole number of seconds >= 1:", argv[a + 1]);
+            }
+            a++;
             continue;
         }
         if (!options_done && strcmp(arg, "--svg") == 0) {
@@ -392,8 +939,33 @@ int main(int argc, char **argv)
             maxpv = (unsigned long)value;
         }
     }
+    if (recheck_file != NULL) {
+        if (count != 0 || certify != NULL || json || svg != NULL) {
+            return usage_error("--recheck takes only the certificate (and --source, --time-limit):", recheck_file);
+        }
+        return recheck(recheck_file, source, limit);
+    }
     if (count == 0) {
         return usage_error("no priority values given", "");
+    }
+    if (certify != NULL) {
+        static struct certificate cert;
+        char log_path[PATH_MAX];
+        int verdict;
+        if (json || svg != NULL) {
+            return usage_error("--certify does not go with --json or --svg:", certify);
+        }
+        if (bsched_init(&plan, pvs, count) != BSCHED_OK) {
+            fprintf(stderr, "bsched-plan: bsched_init failed\n");
+            return 2;
+        }
+        snprintf(log_path, sizeof log_path, "%s.log", certify);
+        verdict = certify_run(source, pvs, count, maxpv, limit, log_path, &cert);
+        if (write_certificate(certify, &cert) != 0) {
+            return 2;
+        }
+        print_certificate_summary(certify, &cert);
+        return verdict;
     }
     rc = bsched_init(&plan, pvs, count);
     if (rc != BSCHED_OK) {

@@ -19,7 +19,7 @@ DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
     bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/proofs/ref/tests/test_bsched_fig7.c \
     bsched/tests/test_bsched.c bsched/tests/table2.h bsched/proofs/README.md bsched/CAVEATS.md \
-    bsched/proofs/tools.txt bsched/proofs/tools_check.py \
+    bsched/proofs/tools.txt bsched/proofs/tools_check.py bsched/proofs/proof_report.py \
     $(filter-out %.pyc,$(shell find bsched/proofs/wp bsched/proofs/cbmc -type f -not -path '*/__pycache__/*'))
 
 CHECKS += dist
@@ -28,9 +28,13 @@ CHECKS += dist
 DIST_CHECK_ERRORS_N ?= 2
 .PHONY: dist distcheck check-dist
 
-$(DIST_TAR): $(DIST_FILES) bsched/dist/Makefile bsched/dist/setup.sh bsched/dist/README.md
+# The proof report of this tree's last proof runs (make proof-report), when there is
+# one, goes in as proof-report/: what the proofs gave here, beside the jobs to re-run.
+DIST_REPORT := $(wildcard $(BUILD)/proof-report/index.html $(BUILD)/proof-report/proof-report.json)
+$(DIST_TAR): $(DIST_FILES) $(DIST_REPORT) bsched/dist/Makefile bsched/dist/setup.sh bsched/dist/README.md
 	@rm -rf $(BUILD)/dist/$(DIST_NAME) && mkdir -p $(BUILD)/dist/$(DIST_NAME)
 	@tar -cf - $(DIST_FILES) | tar -xf - -C $(BUILD)/dist/$(DIST_NAME)
+	@$(if $(DIST_REPORT),mkdir -p $(BUILD)/dist/$(DIST_NAME)/proof-report && cp $(DIST_REPORT) $(BUILD)/dist/$(DIST_NAME)/proof-report/)
 	@cp bsched/dist/Makefile bsched/dist/setup.sh $(BUILD)/dist/$(DIST_NAME)/
 	@sed 's/VERSION/$(DIST_VERSION)/' bsched/dist/README.md > $(BUILD)/dist/$(DIST_NAME)/README.md
 	@tar -czf $@ --owner=0 --group=0 --sort=name -C $(BUILD)/dist $(DIST_NAME)
@@ -65,4 +69,8 @@ check-dist: $(DIST_TAR)
 	    grep -q '^PASS' build/cbmc/errors/result.txt; then \
 	    pass=$$((pass+1)); echo "ok: its CBMC errors harness passes"; \
 	else fail=$$((fail+1)); echo "FAILED: its CBMC errors harness"; tail -20 cbmc.log; fi; \
+	if [ -n "$$(ls bsched/proofs/wp/cache/entries)" ] && $(MAKE) --no-print-directory proof-report > report.log 2>&1 && \
+	    grep -q '<td>errors</td><td>N=2' build/proof-report/index.html; then \
+	    pass=$$((pass+1)); echo "ok: it carries the WP cache, and its make proof-report lists its CBMC run"; \
+	else fail=$$((fail+1)); echo "FAILED: the bundle's WP cache or make proof-report"; tail -20 report.log; fi; \
 	cd $(ROOT); $(call record,dist,$$pass,$$fail); echo "dist: $$pass passed, $$fail failed"; [ $$fail -eq 0 ]
