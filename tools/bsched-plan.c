@@ -67,7 +67,7 @@ static void print_help(void)
            "              perfect, no idle cycle while U >= 1, the same schedule as Fig. 7's\n"
            "              reference engine) and write a certificate to FILE (CBMC's log: FILE.log)\n"
            "  --recheck FILE  re-run the check of certificate FILE and compare\n"
-           "  --source DIR    the bsched folder to certify (bsched.c, bsched.h, ref/)\n"
+           "  --source DIR    the bsched folder to certify (bsched.c, bsched.h, proofs/ref/)\n"
            "  --time-limit S  stop CBMC after S seconds (default 3600): not certified\n"
            "  --          the arguments after it are priority values\n"
            "  --help      this text\n"
@@ -355,7 +355,7 @@ static int write_svg_file(const char *path)
  *
  * bsched-plan writes a harness (CERTIFY_HARNESS below, with the set as a constant
  * array) into a fresh temporary folder and runs CBMC on it with bsched.c and Fig. 7's
- * reference engine (ref/bsched_fig7.c), all of CBMC's property classes on, every
+ * reference engine (proofs/ref/bsched_fig7.c), all of CBMC's property classes on, every
  * loop unwound to its end (--unwinding-assertions: a bound that is too small fails).
  * The set is constant, so CBMC runs the real code symbolically along the one path
  * it takes, through every minor cycle of the major cycle, and checks every assertion
@@ -592,7 +592,7 @@ static int certify_run(const char *source, const uint8_t *set, size_t count, uns
     c->count = (unsigned long)count;
     c->maxpv = maxpv;
     snprintf(lib, sizeof lib, "%s/bsched.c", source);
-    snprintf(ref, sizeof ref, "%s/ref/bsched_fig7.c", source);
+    snprintf(ref, sizeof ref, "%s/proofs/ref/bsched_fig7.c", source);
     file_sha256(lib, c->bsched_sha, sizeof c->bsched_sha);
     file_sha256(ref, c->fig7_sha, sizeof c->fig7_sha);
     find_cbmc(cbmc, sizeof cbmc);
@@ -606,7 +606,7 @@ static int certify_run(const char *source, const uint8_t *set, size_t count, uns
         }
     }
     if (c->bsched_sha[0] == '\0' || c->fig7_sha[0] == '\0') {
-        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c or ref/bsched_fig7.c");
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c or proofs/ref/bsched_fig7.c");
         fprintf(stderr, "bsched-plan: cannot read %s or %s\n", lib, ref);
         return 1;
     }
@@ -639,7 +639,7 @@ static int certify_run(const char *source, const uint8_t *set, size_t count, uns
     snprintf(capacity, sizeof capacity, "-DBSCHED_MAX_PROCS=%lu", (unsigned long)count);
     snprintf(unwind, sizeof unwind, "%lu", bound);
     snprintf(incl, sizeof incl, "-I%s", source);
-    snprintf(incl_ref, sizeof incl_ref, "-I%s/ref", source);
+    snprintf(incl_ref, sizeof incl_ref, "-I%s/proofs/ref", source);
     {
         char *argv[] = {cbmc, "--function", "harness", capacity, incl, incl_ref, harness, lib, ref,
                         "--bounds-check", "--pointer-check", "--div-by-zero-check",
