@@ -52,6 +52,8 @@ include bsched/bsched.mk
 -include $(sort $(wildcard assure/*.mk))
 # Firmware images last: they use the kernel's and the libraries' source lists.
 include apps/apps.mk
+# Boards beside the RoboCube (boards/NAME/board.mk): they build the apps above.
+-include $(sort $(wildcard boards/*/board.mk))
 
 .PHONY: all check setup run clean
 all: $(ALL)

@@ -86,6 +86,19 @@ endef
 
 $(foreach a,$(APPS),$(eval $(call app_template,$(a))))
 
+# The board an image is built for and runs on: the RoboCube (this file) or
+# one of boards/NAME/ (its board.mk has the rules).
+BOARDS := robocube $(sort $(notdir $(patsubst %/board.mk,%,$(wildcard boards/*/board.mk))))
+BOARD  ?= robocube
+ifneq ($(filter run firmware,$(MAKECMDGOALS)),)
+ifneq ($(words $(BOARD)),1)
+$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+endif
+ifeq ($(filter $(BOARD),$(BOARDS)),)
+$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+endif
+endif
+
 ifeq ($(filter $(APP),$(APPS)),)
 $(if $(filter run firmware,$(MAKECMDGOALS)),$(error APP=$(APP): no such image (have: $(APPS))))
 endif
@@ -93,8 +106,12 @@ endif
 FW_ELF := $(call app_elf,$(APP))
 
 .PHONY: firmware firmware-all run
-firmware: $(FW_ELF)
 firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
+ifneq ($(BOARD),robocube)
+firmware: firmware-$(BOARD)
+else
+firmware: $(FW_ELF)
+endif
 
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from
@@ -115,6 +132,9 @@ endif
 # run itself (the shell's `exit`: apps/shell/README.md). QEMU_CONSOLE_ARGS is
 # the one place make run names the console; the shell's tests check it.
 QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
+ifneq ($(BOARD),robocube)
+run: run-$(BOARD)
+else
 run:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER),base)
 	@$(MAKE) --no-print-directory firmware $($(APP)_RUN_DEPS) APP=$(APP)
@@ -125,6 +145,7 @@ else
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
 	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) $(QEMU_CONSOLE_ARGS) $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
+endif
 endif
 
 # make new-app NAME=x: apps/x/ from the PDL program template (apps/pdl_hello),

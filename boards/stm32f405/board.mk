@@ -1,0 +1,115 @@
+# The STM32F405 board (QEMU netduinoplus2): the ARMv7-M port of the kernel
+# (kernel/arch/armv7m), this folder's board support, and the firmware images
+# that need nothing of the RoboCube's hardware, built with Debian's
+# arm-none-eabi GCC and picolibc (ci/setup.d/arm.sh).
+#
+#   make firmware BOARD=stm32f405 [APP=NAME]  build/stm32f405/NAME/NAME.elf (+ .bin, .map)
+#   make run BOARD=stm32f405 [APP=NAME]       boot it on qemu-system-arm -M netduinoplus2
+#   make check-stm32f405-kernel               the kernel target suite on this board
+#   make check-stm32f405-firmware             table1 (Table 2) and the fault report
+#
+# An image builds for this board when its sources include none of the
+# RoboCube's hardware headers (the drivers besides board.h and led.h, the
+# CPU32 headers); otherwise make says which it needs and stops.
+
+STM32_BUILD   := $(BUILD)/stm32f405
+ARM_CC        ?= arm-none-eabi-gcc
+ARM_SIZE      ?= arm-none-eabi-size
+ARM_OBJCOPY   ?= arm-none-eabi-objcopy
+QEMU_ARM      ?= qemu-system-arm
+STM32_MACHINE := netduinoplus2
+STM32_ARCH_FLAGS := -mcpu=cortex-m4 -mthumb -mfloat-abi=soft
+STM32_CFLAGS  := -std=c99 $(STM32_ARCH_FLAGS) -Os -g -ffreestanding -Wall -Wextra -Wpedantic \
+                 -Wconversion -Werror -ffunction-sections -fdata-sections \
+                 -fno-tree-loop-distribute-patterns -MMD -MP --specs=picolibc.specs \
+                 -I$(ROOT) -I$(ROOT)/kernel/include -I$(ROOT)/kernel -I$(ROOT)/kernel/arch/armv7m \
+                 -I$(ROOT)/boards/stm32f405 -I$(ROOT)/bsched -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS)
+STM32_LDSCRIPT := boards/stm32f405/stm32f405.ld
+STM32_LDFLAGS := $(STM32_ARCH_FLAGS) --specs=picolibc.specs -nostartfiles -T $(STM32_LDSCRIPT) \
+                 -Wl,--gc-sections -Wl,--build-id=none -Wl,-z,noexecstack
+# Virtual time from the instruction count alone, as on the RoboCube:
+# 2^3 ns = 8 ns per instruction (125 MIPS, an assumed average for a 168 MHz
+# Cortex-M4, not measured), so SysTick (counting the 168 MHz clock) and the
+# program advance in a fixed ratio and runs repeat exactly.
+STM32_ICOUNT  := shift=3,sleep=off
+# The console is USART1 on stdio; semihosting lets an image end the run
+# (board_power_off: the shell's exit).
+STM32_QEMU_ARGS := -M $(STM32_MACHINE) -display none -monitor none -serial stdio \
+                   -semihosting-config enable=on,target=native
+
+# The port, the board, the kernel and the libraries every image links,
+# compiled per image at its tick rate.
+STM32_BASE_SRCS := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c \
+                   kernel/arch/armv7m/k_arch_armv7m.c kernel/arch/armv7m/switch.S \
+                   boards/stm32f405/vectors.c boards/stm32f405/k_board_stm32f405.c \
+                   boards/stm32f405/board.c kernel/lib/kprintf.c kernel/lib/kstring.c \
+                   bsched/bsched.c $(K_CORE_SRCS)
+
+# Headers that name RoboCube hardware: an image including one needs that board.
+STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h,$(wildcard drivers/*.h)) \
+                       mc68332.h cpu.h
+# $(call stm32_needs,NAME): the RoboCube headers app NAME's sources include.
+stm32_needs = $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(shell grep -lF '\#include "$(h)"' \
+                  $($(1)_SRCS) /dev/null 2>/dev/null),$(h))))
+
+stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
+
+# $(call stm32_image,DIR,NAME,SRCS,CFLAGS): DIR/NAME.elf from SRCS + the base.
+define stm32_image
+$(1)/obj/%.c.o: %.c
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(STM32_CFLAGS) $(4) -c -o $$@ $$<
+
+$(1)/obj/%.S.o: %.S
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(STM32_ARCH_FLAGS) -g -c -o $$@ $$<
+
+$(1)/$(2).elf: $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
+	$$(ARM_CC) $$(STM32_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
+	    $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS)) -lc -lgcc
+	$$(ARM_OBJCOPY) -O binary $$@ $$(@:.elf=.bin)
+	$$(ARM_SIZE) $$@
+
+.SECONDARY: $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS))
+endef
+
+# Firmware images: every app, with its tick rate and start-up (NAME_BOOT).
+define stm32_app_template
+$$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1),$(1),$$($(1)_SRCS) \
+    $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) $$($(1)_STM32_SRCS),\
+    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)))
+endef
+$(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
+
+# The kernel target suite's images (kernel/tests/target-kernel/ktest.c).
+STM32_K_DIR  := $(STM32_BUILD)/kernel
+STM32_K_ELFS := $(patsubst %,$(STM32_K_DIR)/ktest-%.elf,$(K_TEST_MODES))
+$(foreach m,$(K_TEST_MODES),$(eval $(call stm32_image,$(STM32_K_DIR)/$(m),ktest-$(m),\
+    kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)))))
+$(STM32_K_DIR)/ktest-%.elf: $(STM32_K_DIR)/%/ktest-%.elf
+	cp $< $@
+
+STM32_DEPS := $(shell find $(STM32_BUILD) -name '*.d' 2>/dev/null)
+$(STM32_DEPS): ;
+-include $(STM32_DEPS)
+
+.PHONY: firmware-stm32f405 run-stm32f405 stm32f405-kernel-target
+firmware-stm32f405: $(call stm32_elf,$(APP))
+stm32f405-kernel-target: $(STM32_K_ELFS)
+
+# An image that needs the RoboCube's hardware stops here, naming what it needs.
+ifneq ($(filter stm32f405,$(BOARD)),)
+ifneq ($(filter run firmware firmware-stm32f405 run-stm32f405,$(MAKECMDGOALS)),)
+ifneq ($(call stm32_needs,$(APP)),)
+$(error APP=$(APP) needs the RoboCube's hardware ($(call stm32_needs,$(APP))): it runs with BOARD=robocube only)
+endif
+endif
+endif
+
+run-stm32f405:
+	@$(SETUP) arm
+	@$(MAKE) --no-print-directory firmware-stm32f405 BOARD=stm32f405 APP=$(APP)
+	@echo "make run: booting $(call stm32_elf,$(APP)) on $(QEMU_ARM) -M $(STM32_MACHINE) (console = USART1 on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s)$(if $($(APP)_QUIT),; $($(APP)_QUIT)); quit with Ctrl-C)" >&2
+	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
+	    $(QEMU_ARM) $(STM32_QEMU_ARGS) -icount $(STM32_ICOUNT) -kernel $(call stm32_elf,$(APP)); rc=$$?; \
+	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
