@@ -54,28 +54,28 @@ stm32_needs = $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(shell grep -lF '\
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
-# $(call stm32_image,DIR,NAME,SRCS,CFLAGS): DIR/NAME.elf from SRCS + the base.
+# $(call stm32_image,OBJDIR,ELF,SRCS,CFLAGS): ELF from SRCS + the base, objects in OBJDIR.
 define stm32_image
-$(1)/obj/%.c.o: %.c
+$(1)/%.c.o: %.c
 	@mkdir -p $$(@D)
 	$$(ARM_CC) $$(STM32_CFLAGS) $(4) -c -o $$@ $$<
 
-$(1)/obj/%.S.o: %.S
+$(1)/%.S.o: %.S
 	@mkdir -p $$(@D)
 	$$(ARM_CC) $$(STM32_ARCH_FLAGS) -g -c -o $$@ $$<
 
-$(1)/$(2).elf: $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
+$(2): $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
 	$$(ARM_CC) $$(STM32_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
-	    $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS)) -lc -lgcc
+	    $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS)) -lc -lgcc
 	$$(ARM_OBJCOPY) -O binary $$@ $$(@:.elf=.bin)
 	$$(ARM_SIZE) $$@
 
-.SECONDARY: $$(patsubst %,$(1)/obj/%.o,$(3) $$(STM32_BASE_SRCS))
+.SECONDARY: $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS))
 endef
 
 # Firmware images: every app, with its tick rate and start-up (NAME_BOOT).
 define stm32_app_template
-$$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1),$(1),$$($(1)_SRCS) \
+$$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$($(1)_SRCS) \
     $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) $$($(1)_STM32_SRCS),\
     -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)))
 endef
@@ -84,10 +84,8 @@ $(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
 # The kernel target suite's images (kernel/tests/target-kernel/ktest.c).
 STM32_K_DIR  := $(STM32_BUILD)/kernel
 STM32_K_ELFS := $(patsubst %,$(STM32_K_DIR)/ktest-%.elf,$(K_TEST_MODES))
-$(foreach m,$(K_TEST_MODES),$(eval $(call stm32_image,$(STM32_K_DIR)/$(m),ktest-$(m),\
+$(foreach m,$(K_TEST_MODES),$(eval $(call stm32_image,$(STM32_K_DIR)/obj-$(m),$(STM32_K_DIR)/ktest-$(m).elf,\
     kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)))))
-$(STM32_K_DIR)/ktest-%.elf: $(STM32_K_DIR)/%/ktest-%.elf
-	cp $< $@
 
 STM32_DEPS := $(shell find $(STM32_BUILD) -name '*.d' 2>/dev/null)
 $(STM32_DEPS): ;
@@ -113,3 +111,13 @@ run-stm32f405:
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
 	    $(QEMU_ARM) $(STM32_QEMU_ARGS) -icount $(STM32_ICOUNT) -kernel $(call stm32_elf,$(APP)); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
+
+# The kernel target suite (kernel/tests/target-kernel) on this board: the same
+# images and judgements, K_BOARD=stm32f405 picks the machine and -icount.
+CHECKS += stm32f405-kernel
+.PHONY: check-stm32f405-kernel
+check-stm32f405-kernel:
+	@$(SETUP) base arm
+	@$(MAKE) --no-print-directory stm32f405-kernel-target
+	@K_BOARD=stm32f405 BSCHED_QEMU=$$(command -v $(QEMU_ARM)) K_TARGET_DIR=$(STM32_K_DIR) \
+	    CROSS_PREFIX=arm-none-eabi- ci/pytest-suite stm32f405-kernel kernel/tests/target-kernel

@@ -140,11 +140,15 @@ class Machine:
     """One robocube QEMU process with qtest (optional), QMP and serial sockets."""
 
     def __init__(self, kernel=None, qtest=None, extra_args=(), timeout=20.0,
-                 disable_watchdog=True):
+                 disable_watchdog=True, qemu=None, machine="robocube",
+                 serial_names=SERIAL_NAMES):
         """kernel: ELF to run (then the CPU runs, no qtest unless qtest=True).
         disable_watchdog (qtest only): write SYPCR = 0 first, because the SIM
         software watchdog is on at reset (15.6 ms) and would reset the board
-        during clock_step; SYPCR is write-once, so tests of SYPCR pass False."""
+        during clock_step; SYPCR is write-once, so tests of SYPCR pass False.
+        qemu, machine, serial_names: another QEMU binary and machine (the
+        stm32f405 board: qemu-system-arm, netduinoplus2, its one console
+        USART), whose serial ports are served in the same way."""
         self.qtest_enabled = (kernel is None) if qtest is None else qtest
         self.dir = tempfile.mkdtemp(prefix="robocube-")
         self.irq_events = []            # (raise: bool, line) from irq_intercept_*
@@ -154,10 +158,10 @@ class Machine:
         self.qmp = None
         listeners = []
         try:
-            args = [qemu_binary(), "-M", "robocube", "-display", "none",
+            args = [qemu or qemu_binary(), "-M", machine, "-display", "none",
                     "-nodefaults", "-monitor", "none"]
             serial_listeners = []
-            for i, name in enumerate(SERIAL_NAMES):
+            for i, name in enumerate(serial_names):
                 path = os.path.join(self.dir, f"serial{i}.sock")
                 lst = self._listen(path)
                 serial_listeners.append(lst)
@@ -185,11 +189,11 @@ class Machine:
                                          preexec_fn=_die_with_parent)
             # QEMU connects the chardevs, then qtest, then QMP, in this order.
             self.serial = [SerialPort(name, self._accept(lst, timeout))
-                           for name, lst in zip(SERIAL_NAMES, serial_listeners)]
+                           for name, lst in zip(serial_names, serial_listeners)]
             if self.qtest_enabled:
                 self._qtest = self._accept(qtest_listener, timeout)
             self.qmp.accept(timeout)
-            if self.qtest_enabled and disable_watchdog:
+            if self.qtest_enabled and disable_watchdog and machine == "robocube":
                 self.writeb(SYPCR, 0x00)
         except BaseException:
             self.close()

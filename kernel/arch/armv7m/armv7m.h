@@ -78,9 +78,10 @@ extern const unsigned armv7m_irq_lines;
  * the console (the board's USART at level 5), as the PIT on the RoboCube. */
 #define ARMV7M_TICK_LEVEL 4u
 
-/* Starts SysTick from the processor clock at tick_hz; fn runs in the tick
- * interrupt (through the kernel's interrupt entry). Returns 0, or -1 when
- * cpu_hz / tick_hz is not a whole count within SysTick's 24 bits. */
+/* Starts SysTick from the processor clock at tick_hz (the nearest whole
+ * count of cpu_hz); fn runs in the tick interrupt (between k_isr_enter and
+ * k_isr_exit). Returns 0, or -1 when the count does not fit SysTick's
+ * 24 bits. */
 int armv7m_systick_start(uint32_t cpu_hz, uint32_t tick_hz, void (*fn)(void));
 
 /* Every device interrupt's vector entry: dispatches the handler registered

@@ -97,9 +97,11 @@ void armv7m_systick(void)
 int armv7m_systick_start(uint32_t cpu_hz, uint32_t tick_hz, void (*fn)(void))
 {
     uint32_t reload;
-    if (tick_hz == 0u || fn == NULL || cpu_hz % tick_hz != 0u)
+    if (tick_hz == 0u || fn == NULL)
         return -1;
-    reload = cpu_hz / tick_hz - 1u;
+    /* The nearest whole count: 168 MHz / 1024 Hz is 164062.5, so the tick
+     * runs at 1023.997 Hz there (-3 ppm, well inside a crystal's tolerance). */
+    reload = (cpu_hz + tick_hz / 2u) / tick_hz - 1u;
     if (reload == 0u || reload > SYST_RVR_MAX)
         return -1;
     armv7m_tick_fn = fn;

@@ -35,6 +35,17 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[3]
 TRACE = re.compile(r"^Trace \d+: \S+ \[[0-9a-f]+/([0-9a-f]+)/")
 
+# What differs between the boards the kernel runs on: the QEMU machine, the
+# -icount setting (each board's `make run` value), the binutils prefix, and
+# the first instruction of the tick interrupt (where the tick span starts).
+BOARDS = {
+    "robocube": {"machine": "robocube", "icount": "shift=8,sleep=off",
+                 "cross": "m68k-linux-gnu-", "tick_entry": "k_isr_entry"},
+    "stm32f405": {"machine": "netduinoplus2", "icount": "shift=3,sleep=off",
+                  "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick"},
+}
+BOARD = BOARDS[os.environ.get("K_BOARD", "robocube")]
+
 
 
 def _die_with_parent():
@@ -43,7 +54,7 @@ def _die_with_parent():
     -icount sleep=off an idle guest keeps a host core busy)."""
     ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # PR_SET_PDEATHSIG
 
-def symbols(elf, cross="m68k-linux-gnu-"):
+def symbols(elf, cross=BOARD["cross"]):
     out = subprocess.run([cross + "nm", str(elf)], check=True, capture_output=True,
                          text=True).stdout
     table = {}
@@ -82,8 +93,8 @@ def trace_pcs(qemu, elf, seconds=60.0, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(tmp) / "exec.log"
         out, _ = run_until_result(
-            [qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
-             "-monitor", "none", "-serial", "stdio", "-icount", "shift=8,sleep=off",
+            [qemu, "-M", BOARD["machine"], "-kernel", str(elf), "-display", "none",
+             "-monitor", "none", "-serial", "stdio", "-icount", BOARD["icount"],
              "-singlestep", "-d", "exec,nochain", "-D", str(log)], seconds, marker)
         pcs = []
         with open(log, errors="replace") as f:
@@ -120,11 +131,13 @@ def measure(qemu, elf):
     sym = symbols(elf)
     pcs, console = trace_pcs(qemu, elf)
     spin = sym["ktest_spin_loop"]
-    # The PIT is routed through the kernel's entry (as every interrupt is):
-    # the span starts at k_isr_entry; ending in the woken sleeper after a
-    # switch means it was the tick (the only interrupt that wakes it).
-    tick = spans(pcs, sym["k_isr_entry"], sym["ktest_after_sleep"],
-                 must_pass=sym["k_arch_switch"], stop_at=sym["k_isr_entry"],
+    # The tick's first instruction (RoboCube: the kernel's entry, where the
+    # PIT is routed; stm32f405: the SysTick handler) starts the span; ending
+    # in the woken sleeper after a switch means it was the tick (the only
+    # interrupt that wakes it).
+    entry = sym[BOARD["tick_entry"]]
+    tick = spans(pcs, entry, sym["ktest_after_sleep"],
+                 must_pass=sym["k_arch_switch"], stop_at=entry,
                  after_range=(spin - 64, spin + 64))
     handoff = spans(pcs, sym["ktest_before_post"], sym["ktest_after_wait"],
                     must_pass=sym["k_arch_switch"])
