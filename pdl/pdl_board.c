@@ -27,7 +27,10 @@
 #include "drivers/led.h"
 #include "pdl/pdl_board.h"
 
-#if defined(__has_include)
+/* PDL_PORTS_EXTERNAL: another board's ports (boards/NAME/ defines
+ * pdl_platform_read_inputs, _write and _start_ports); the RoboCube's drivers
+ * below are then left out. */
+#if defined(__has_include) && !defined(PDL_PORTS_EXTERNAL)
 #if __has_include("drivers/sampler.h")
 #include "drivers/sampler.h"
 #include "drivers/board_io.h"
@@ -86,6 +89,7 @@ static uint32_t pdl_ticks_to_us(k_ticks_t t)
 }
 
 /* ---- ports ---- */
+#ifndef PDL_PORTS_EXTERNAL
 void pdl_platform_read_inputs(struct pdl_inputs *in)
 {
 #ifdef PDL_HAVE_SAMPLER
@@ -213,6 +217,7 @@ int pdl_platform_start_ports(void)
     (void)tpu_up;
     return PDL_OK;
 }
+#endif /* PDL_PORTS_EXTERNAL */
 
 /* ---- the cycle thread ---- */
 static struct bsched pdl_outer;

@@ -49,8 +49,13 @@ STM32_BASE_SRCS := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c \
 STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h,$(wildcard drivers/*.h)) \
                        mc68332.h cpu.h
 # $(call stm32_needs,NAME): the RoboCube headers app NAME's sources include.
-stm32_needs = $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(shell grep -lF '\#include "$(h)"' \
-                  $($(1)_SRCS) /dev/null 2>/dev/null),$(h))))
+stm32_hash  := \#
+stm32_includes = $(shell grep -lF '$(stm32_hash)include "$(2)' $($(1)_SRCS) /dev/null 2>/dev/null)
+stm32_needs = $(strip $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(call stm32_includes,$(1),$(h)"),$(h)))) \
+                  $(if $(call stm32_includes,$(1),net/),net/ (the radio on the DUART)) \
+                  $(if $($(1)_RUNNER),its runner (the RoboCube world co-simulation)))
+# The PDL runtime with this board's ports, for images that include pdl/.
+STM32_PDL_SRCS := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_board.c boards/stm32f405/pdl_ports_stm32f405.c
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
@@ -76,8 +81,9 @@ endef
 # Firmware images: every app, with its tick rate and start-up (NAME_BOOT).
 define stm32_app_template
 $$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$($(1)_SRCS) \
-    $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) $$($(1)_STM32_SRCS),\
-    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)))
+    $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) \
+    $$(if $$(call stm32_includes,$(1),pdl/),$$(STM32_PDL_SRCS)),\
+    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' -DPDL_PORTS_EXTERNAL $$($(1)_CFLAGS)))
 endef
 $(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
 
@@ -121,3 +127,21 @@ check-stm32f405-kernel:
 	@$(MAKE) --no-print-directory stm32f405-kernel-target
 	@K_BOARD=stm32f405 BSCHED_QEMU=$$(command -v $(QEMU_ARM)) K_TARGET_DIR=$(STM32_K_DIR) \
 	    CROSS_PREFIX=arm-none-eabi- ci/pytest-suite stm32f405-kernel kernel/tests/target-kernel
+
+# Fault report images (boards/stm32f405/tests/fault_image.c; FAULT_KIND = position).
+STM32_FAULT_KINDS := unmapped undef divzero thread
+STM32_FAULT_ELFS  := $(patsubst %,$(STM32_BUILD)/tests/fault-%.elf,$(STM32_FAULT_KINDS))
+stm32_fault_index  = $(strip $(foreach i,1 2 3 4,$(if $(filter $(1),$(word $(i),$(STM32_FAULT_KINDS))),$(i))))
+$(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-$(k),\
+    $(STM32_BUILD)/tests/fault-$(k).elf,boards/stm32f405/tests/fault_image.c,\
+    -DFAULT_KIND=$(call stm32_fault_index,$(k)))))
+
+# The firmware on this board: table1 via make run, the fault reports, make
+# run's refusals (boards/stm32f405/tests).
+CHECKS += stm32f405-firmware
+.PHONY: check-stm32f405-firmware
+check-stm32f405-firmware:
+	@$(SETUP) base arm
+	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(STM32_FAULT_ELFS)
+	@STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
+	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests
