@@ -142,6 +142,13 @@ CHECKS += stm32f405-firmware
 .PHONY: check-stm32f405-firmware
 check-stm32f405-firmware:
 	@$(SETUP) base arm
-	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(STM32_FAULT_ELFS)
+	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(call stm32_elf,pdl_hello) $(STM32_FAULT_ELFS) $(STM32_PDL_TEST_ELF)
 	@STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
 	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests
+
+# The PDL target test image (boards/stm32f405/tests/pdl_ports.c), started by
+# drivers/board_main.c like any ordinary program, at the kernel's 1024 Hz.
+STM32_PDL_TEST_ELF := $(STM32_BUILD)/tests/pdl-ports.elf
+$(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-pdl,$(STM32_PDL_TEST_ELF),\
+    boards/stm32f405/tests/pdl_ports.c $(APP_BOOT_SRC) $(STM32_PDL_SRCS),\
+    -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"' -DPDL_PORTS_EXTERNAL))

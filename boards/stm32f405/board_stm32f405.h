@@ -17,6 +17,7 @@ struct stm32f405_sim_io {
     int32_t motor[4];
     int32_t analog_out[8];
     int32_t fast_out[8];
+    uint32_t adc_no_eoc;     /* ADC conversions read without EOC (QEMU's model) */
 };
 extern struct stm32f405_sim_io stm32f405_sim_io;
 #endif /* BOARD_STM32F405_H */

@@ -126,3 +126,33 @@ def test_image_that_needs_the_robocube_says_so():
     assert "APP=iotest needs the RoboCube's hardware (" in lines[0]
     assert "drivers/" in lines[0] and "BOARD=robocube only" in lines[0]
     assert not (BUILD / "iotest").exists()
+
+
+def test_pdl_program_with_the_boards_ports():
+    """A PDL program on this board's ports: ADC1 channel 0 copied to TIM3's
+    PWM channel 0 (read back from the timer), a simulated BIO line written and
+    read back every cycle, no overrun in one second of cycles."""
+    with boot(BUILD / "tests" / "pdl-ports.elf") as m:
+        line = m.console.read_until(b"\n", 20.0).decode()
+        while "PDL-PORTS" not in line:
+            line = m.console.read_until(b"\n", 20.0).decode()
+    f = {k: int(v, 0) for k, v in re.findall(r"(\w+)=(\S+)", line)}
+    assert "FAIL" not in line, line
+    assert 100 <= f["cycles"] <= 104 and f["overruns"] == 0, line    # ~100 Hz for 1 s
+    assert f["adc_max"] > f["adc_min"], "the ADC gave one value only"   # QEMU: +7 per conversion
+    assert f["ccr1"] == f["pwm"] and 0 <= f["pwm"] <= 510, "TIM3 CCR1 is the PWM actuator"
+    assert f["loop_ok"] == f["cycles"] and f["loop_bad"] == 0, line
+    assert f["adc_no_eoc"] > 0      # documented: QEMU's ADC never sets EOC
+
+
+def test_pdl_hello_as_an_ordinary_program():
+    """apps/pdl_hello unchanged (printf through picolibc, main as a thread)."""
+    with boot(BUILD / "pdl_hello" / "pdl_hello.elf") as m:
+        text = m.console.read_until(b"t=3 s", 20.0)
+        text += m.console.read_until(b"\n", 5.0)
+    rows = re.findall(rb"t=(\d) s heading=(-?\d+) cycles=(\d+) runs=(\d+) overruns=(\d+)", text)
+    assert [int(r[0]) for r in rows] == [1, 2, 3], text
+    for second, heading, cycles, runs, overruns in rows:
+        assert int(overruns) == 0
+        assert abs(int(cycles) - 102 * int(second)) <= 3, text   # the default ~102.4 Hz
+        assert -1000 <= int(heading) <= 1000
