@@ -152,3 +152,36 @@ STM32_PDL_TEST_ELF := $(STM32_BUILD)/tests/pdl-ports.elf
 $(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-pdl,$(STM32_PDL_TEST_ELF),\
     boards/stm32f405/tests/pdl_ports.c $(APP_BOOT_SRC) $(STM32_PDL_SRCS),\
     -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"' -DPDL_PORTS_EXTERNAL))
+
+# The bench image (boards/stm32f405/bench_armv7m.c): bsched.c and the Fig. 7
+# reference at BSCHED_MAX_PROCS = $(BENCH_PROCS), as the CPU32's bench image.
+STM32_BENCH_DIR  := $(BENCH_DIR)/stm32f405
+STM32_BENCH_ELF  := $(STM32_BENCH_DIR)/bench-armv7m.elf
+STM32_BENCH_SRCS := boards/stm32f405/bench_armv7m.c bsched/ref/bsched_fig7.c
+STM32_BENCH_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=%,$(STM32_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
+                    -I$(ROOT)/bsched/ref -I$(ROOT)/bsched/bench -DBENCH_CYCLES=$(BENCH_CYCLES)u
+STM32_BENCH_OBJS := $(patsubst %,$(STM32_BENCH_DIR)/%.o,$(STM32_BENCH_SRCS) $(STM32_BASE_SRCS))
+$(STM32_BENCH_DIR)/%.c.o: %.c
+	@mkdir -p $(@D)
+	$(ARM_CC) $(STM32_BENCH_FLAGS) -c -o $@ $<
+$(STM32_BENCH_DIR)/%.S.o: %.S
+	@mkdir -p $(@D)
+	$(ARM_CC) $(STM32_ARCH_FLAGS) -g -c -o $@ $<
+$(STM32_BENCH_ELF): $(STM32_BENCH_OBJS) $(STM32_LDSCRIPT)
+	$(ARM_CC) $(STM32_LDFLAGS) -o $@ $(STM32_BENCH_OBJS) -lc -lgcc
+
+# make bench-cpus: the one table of both CPUs side by side (bench_cpus.py),
+# written to build/bench/cpus.txt. Long (several minutes of traced
+# emulation): not part of make check.
+.PHONY: bench-cpus
+bench-cpus:
+	@$(SETUP) base m68k qemu arm
+	@$(MAKE) --no-print-directory $(BENCH_DIR)/bench-cpu32.elf $(STM32_BENCH_ELF) \
+	    $(K_BUILD)/target/ktest-measure.elf $(STM32_K_DIR)/ktest-measure.elf \
+	    $(call app_elf,pdl_bench) $(call stm32_elf,pdl_bench)
+	@flock /tmp/bsched-heavy.lock $(PYTHON) boards/stm32f405/bench_cpus.py --cycles $(BENCH_CYCLES) \
+	    --robocube-bench $(BENCH_DIR)/bench-cpu32.elf --robocube-ktest $(K_BUILD)/target/ktest-measure.elf \
+	    --robocube-pdl $(call app_elf,pdl_bench) --robocube-qemu $(QEMU_M68K) \
+	    --stm32f405-bench $(STM32_BENCH_ELF) --stm32f405-ktest $(STM32_K_DIR)/ktest-measure.elf \
+	    --stm32f405-pdl $(call stm32_elf,pdl_bench) --stm32f405-qemu $$(command -v $(QEMU_ARM)) \
+	    --out $(BENCH_DIR)/cpus.txt
