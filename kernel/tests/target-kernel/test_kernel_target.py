@@ -25,7 +25,7 @@ ROOT = Path(__file__).resolve().parents[3]
 QEMU = os.environ.get("BSCHED_QEMU", "")
 IMAGES = Path(os.environ.get("K_TARGET_DIR", ROOT / "build" / "kernel" / "target"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
-ICOUNT = ["-icount", kmeasure.BOARD["icount"]]
+ICOUNT = ["-icount", kmeasure.BOARD["test_icount"]]
 MACHINE = kmeasure.BOARD["machine"]
 TIME_LIMIT = 60.0  # wall seconds per image
 
