@@ -59,25 +59,30 @@ STM32_PDL_SRCS := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_board.c boards/stm32f405
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
-# $(call stm32_image,OBJDIR,ELF,SRCS,CFLAGS): ELF from SRCS + the base, objects in OBJDIR.
-define stm32_image
+# $(call stm32_objrules,OBJDIR,CFLAGS): how OBJDIR's objects are compiled.
+define stm32_objrules
 $(1)/%.c.o: %.c
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(STM32_CFLAGS) $(4) -c -o $$@ $$<
+	$$(ARM_CC) $$(STM32_CFLAGS) $(2) -c -o $$@ $$<
 
 $(1)/%.S.o: %.S
 	@mkdir -p $$(@D)
 	$$(ARM_CC) $$(STM32_ARCH_FLAGS) -g -c -o $$@ $$<
+endef
 
-$(2): $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
+# $(call stm32_image,OBJDIR,ELF,SRCS,CFLAGS[,BASEDIR]): ELF from SRCS + the base,
+# objects in OBJDIR; the base's in BASEDIR when given (images that share it:
+# its rules come from a stm32_objrules of their own).
+define stm32_image
+$$(eval $$(call stm32_objrules,$(1),$(4)))
+$(2): $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
 	$$(ARM_CC) $$(STM32_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
-	    $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS)) -lc -lgcc
+	    $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS)) -lc -lgcc
 	$$(ARM_OBJCOPY) -O binary $$@ $$(@:.elf=.bin)
 	$$(ARM_SIZE) $$@
 
-.SECONDARY: $$(patsubst %,$(1)/%.o,$(3) $$(STM32_BASE_SRCS))
+.SECONDARY: $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS))
 endef
-
 # Firmware images: every app, with its tick rate and start-up (NAME_BOOT).
 define stm32_app_template
 $$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$($(1)_SRCS) \
@@ -90,8 +95,11 @@ $(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
 # The kernel target suite's images (kernel/tests/target-kernel/ktest.c).
 STM32_K_DIR  := $(STM32_BUILD)/kernel
 STM32_K_ELFS := $(patsubst %,$(STM32_K_DIR)/ktest-%.elf,$(K_TEST_MODES))
+# The test and fault images share one build of the base (the kernel's default tick).
+STM32_TEST_BASE := $(STM32_BUILD)/obj-test-base
+$(eval $(call stm32_objrules,$(STM32_TEST_BASE),))
 $(foreach m,$(K_TEST_MODES),$(eval $(call stm32_image,$(STM32_K_DIR)/obj-$(m),$(STM32_K_DIR)/ktest-$(m).elf,\
-    kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)))))
+    kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)),$(STM32_TEST_BASE))))
 
 STM32_DEPS := $(shell find $(STM32_BUILD) -name '*.d' 2>/dev/null)
 $(STM32_DEPS): ;
@@ -134,7 +142,7 @@ STM32_FAULT_ELFS  := $(patsubst %,$(STM32_BUILD)/tests/fault-%.elf,$(STM32_FAULT
 stm32_fault_index  = $(strip $(foreach i,1 2 3 4,$(if $(filter $(1),$(word $(i),$(STM32_FAULT_KINDS))),$(i))))
 $(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-$(k),\
     $(STM32_BUILD)/tests/fault-$(k).elf,boards/stm32f405/tests/fault_image.c,\
-    -DFAULT_KIND=$(call stm32_fault_index,$(k)))))
+    -DFAULT_KIND=$(call stm32_fault_index,$(k)),$(STM32_TEST_BASE))))
 
 # The firmware on this board: table1 via make run, the fault reports, make
 # run's refusals (boards/stm32f405/tests).
