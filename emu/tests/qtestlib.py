@@ -137,7 +137,8 @@ class SerialPort:
 
 
 class Machine:
-    """One robocube QEMU process with qtest (optional), QMP and serial sockets."""
+    """One QEMU process (the robocube machine unless told otherwise) with qtest
+    (optional), QMP and serial sockets."""
 
     def __init__(self, kernel=None, qtest=None, extra_args=(), timeout=20.0,
                  disable_watchdog=True, qemu=None, machine="robocube",

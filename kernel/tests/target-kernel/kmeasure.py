@@ -17,6 +17,9 @@ translation block, no block chaining), then walks the PC sequence:
   sem hand-off: from ktest_before_post in the giver to ktest_after_wait in
                the taker: k_sem_post, waking, switch, return out of k_sem_wait.
 
+K_BOARD=stm32f405 measures the same paths on the ARMv7-M port (qemu-system-arm
+-M netduinoplus2; the tick span starts at the SysTick handler): see BOARDS.
+
 Usage: kmeasure.py [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
 $BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
 """
