@@ -144,13 +144,14 @@ $(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/
     $(STM32_BUILD)/tests/fault-$(k).elf,boards/stm32f405/tests/fault_image.c,\
     -DFAULT_KIND=$(call stm32_fault_index,$(k)),$(STM32_TEST_BASE))))
 
-# The firmware on this board: table1 via make run, the fault reports, make
-# run's refusals (boards/stm32f405/tests).
+# The firmware on this board: table1 via make run, the fault reports, PDL (its
+# ports, pdl_hello, pdl_bench), make run's refusals (boards/stm32f405/tests).
 CHECKS += stm32f405-firmware
 .PHONY: check-stm32f405-firmware
 check-stm32f405-firmware:
 	@$(SETUP) base arm
-	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(call stm32_elf,pdl_hello) $(STM32_FAULT_ELFS) $(STM32_PDL_TEST_ELF)
+	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(call stm32_elf,pdl_hello) $(call stm32_elf,pdl_bench) \
+	    $(STM32_FAULT_ELFS) $(STM32_PDL_TEST_ELF)
 	@STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
 	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests
 
