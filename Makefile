@@ -92,6 +92,8 @@ include assure/assure.mk
 include apps/apps.mk
 # The bench: the library and Fig. 7 on the host and on a bare CPU32 image.
 include bench/bench.mk
+# A board beside the RoboCube (BOARD=stm32f405): it builds the apps above.
+include boards/stm32f405/board.mk
 
 .PHONY: all check setup run clean
 all: $(ALL)

@@ -115,6 +115,18 @@ $(foreach a,$(APPS),$(eval $(call app_host_template,$(a))))
 # make host-lib [APP=NAME]: that library (phony: quiet when it is up to date).
 .PHONY: host-lib
 host-lib: $(call app_host_lib,$(APP))
+# The board an image is built for and runs on: the RoboCube (this file and
+# boards/robocube/) or another of boards/NAME/ (its board.mk has the rules).
+BOARDS := $(sort robocube $(notdir $(patsubst %/board.mk,%,$(wildcard boards/*/board.mk))))
+BOARD  ?= robocube
+ifneq ($(filter run firmware,$(MAKECMDGOALS)),)
+ifneq ($(words $(BOARD)),1)
+$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+endif
+ifeq ($(filter $(BOARD),$(BOARDS)),)
+$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+endif
+endif
 
 ifeq ($(filter $(APP),$(APPS)),)
 $(if $(filter run firmware,$(MAKECMDGOALS)),$(error APP=$(APP): no such image (have: $(APPS))))
@@ -123,8 +135,12 @@ endif
 FW_ELF := $(call app_elf,$(APP))
 
 .PHONY: firmware firmware-all run
-firmware: $(FW_ELF)
 firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
+ifneq ($(BOARD),robocube)
+firmware: firmware-$(BOARD)
+else
+firmware: $(FW_ELF)
+endif
 
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from
@@ -186,6 +202,9 @@ ARENA_RUN = $(PYTHON) $(ROOT)/emu/world/run.py --arena $(ROOT)/emu/world/arenas/
 # run itself (the shell's `exit`: apps/shell/README.md). QEMU_CONSOLE_ARGS is
 # the one place make run names the console; the shell's tests check it.
 QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
+ifneq ($(BOARD),robocube)
+run: run-$(BOARD)
+else
 run:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER)$(RUN_IN_ARENA),base)
 	@$(MAKE) --no-print-directory $(if $(filter 1,$(V)),,-s) $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
@@ -201,6 +220,7 @@ else
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
 	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) $(QEMU_CONSOLE_ARGS) $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
+endif
 endif
 
 # make new-app NAME=x: apps/x/ from the PDL program template (apps/pdl_hello),

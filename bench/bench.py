@@ -58,8 +58,8 @@ def host_case(binary, n, cycles):
             "fig7": cost["bsched_fig7_step"] / cycles, "step": cost["bsched_step"] / cycles}
 
 
-def symbols(path, defined_text_only=True):
-    out = subprocess.run([CROSS + "nm", "-S", str(path)], capture_output=True, text=True,
+def symbols(path, defined_text_only=True, cross=CROSS):
+    out = subprocess.run([cross + "nm", "-S", str(path)], capture_output=True, text=True,
                          check=True).stdout
     table = {}
     for line in out.splitlines():
@@ -71,11 +71,14 @@ def symbols(path, defined_text_only=True):
     return table
 
 
-def cpu32_run(elf, qemu, objs, cycles, seconds=900):
-    elf_syms = symbols(elf)
+def cpu32_run(elf, qemu, objs, cycles, seconds=900, machine="robocube",
+              icount="shift=8,sleep=off", cross=CROSS):
+    """The image's phases on a board: the RoboCube by default, or (machine,
+    icount, cross) another one (the stm32f405's, boards/stm32f405/bench_cpus.py)."""
+    elf_syms = symbols(elf, cross=cross)
     names = set()
     for obj in objs:
-        names.update(symbols(obj))
+        names.update(symbols(obj, cross=cross))
     names.update(("memcpy", "memset"))
     ranges = [elf_syms[name] for name in sorted(names) if name in elf_syms]
     mark_pc, mark_size = elf_syms["bench_mark"]
@@ -105,9 +108,9 @@ def cpu32_run(elf, qemu, objs, cycles, seconds=900):
                         current += 1
         thread = threading.Thread(target=reader, daemon=True)
         thread.start()
-        proc = subprocess.Popen([qemu, "-M", "robocube", "-kernel", str(elf), "-display", "none",
+        proc = subprocess.Popen([qemu, "-M", machine, "-kernel", str(elf), "-display", "none",
                                  "-monitor", "none", "-serial", "stdio", "-icount",
-                                 "shift=8,sleep=off", "-singlestep", "-d", "exec,nochain",
+                                 icount, "-singlestep", "-d", "exec,nochain",
                                  "-dfilter", dfilter, "-D", str(fifo)],
                                 stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE)

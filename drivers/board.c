@@ -5,6 +5,13 @@
 #include "k_board.h"
 #include "kernel/lib/kstring.h"
 #include "drivers/led.h"
+#include "drivers/duart_console.h"
+#include "mc68332.h"
+
+const char board_name[] = "RoboCube";
+const char board_cpu_name[] = "MC68332";
+const uint32_t board_cpu_hz = CPU_CLOCK_HZ;
+const uint32_t board_console_baud = CONSOLE_BAUD;
 
 void board_halt(const char *image, const char *why)
 {

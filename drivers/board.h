@@ -16,6 +16,13 @@
 
 #include "kernel.h"
 
+/* What the image runs on, for its banner: the board ("RoboCube"), its CPU
+ * ("MC68332"), the CPU clock and the console's baud rate. */
+extern const char board_name[];
+extern const char board_cpu_name[];
+extern const uint32_t board_cpu_hz;
+extern const uint32_t board_console_baud;
+
 /* Resets the kernel (k_init), switches the status LED off and brings up the
  * kernel's board support (interrupt-driven console on DUART B, the PIT tick
  * at K_TICK_HZ). An image cannot run without its tick, so on failure it

@@ -60,6 +60,9 @@ void k_resched(void);
 void k_prio_update(struct k_thread *t);
 /* Releases the mutexes a dying thread holds (k_sync.c). */
 void k_mutex_release_all(struct k_thread *t);
+/* The level k_irq_register stored for vector (0: none): for a port whose
+ * interrupt controller takes each line's priority (ARMv7-M's NVIC). */
+unsigned k_irq_level(unsigned vector);
 /* Called when a thread blocked on a mutex stops waiting (timeout). */
 void k_mutex_waiter_gone(struct k_mutex *m);
 

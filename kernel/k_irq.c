@@ -27,6 +27,11 @@ int k_irq_register(unsigned vector, unsigned level, k_irq_handler handler, void 
     return r;
 }
 
+unsigned k_irq_level(unsigned vector)
+{
+    return k_irq_table[vector & 0xFFu].level;
+}
+
 void k_irq_dispatch(unsigned vector)
 {
     const struct k_irq_slot *slot = &k_irq_table[vector & 0xFFu];

@@ -26,11 +26,16 @@
 #include "drivers/led.h"
 #include "pdl/pdl_board.h"
 
+/* PDL_PORTS_EXTERNAL: another board's ports (boards/NAME/ defines
+ * pdl_platform_read_inputs, _write and _start_ports); the RoboCube's drivers
+ * below are then left out. */
+#ifndef PDL_PORTS_EXTERNAL
 #include "drivers/sai.h"
 #include "drivers/sampler.h"
 #include "drivers/board_io.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
+#endif
 
 #ifndef PDL_STACK_BYTES
 #define PDL_STACK_BYTES 2048u
@@ -63,6 +68,7 @@ static uint32_t pdl_ticks_to_us(k_ticks_t t)
 }
 
 /* ---- ports ---- */
+#ifndef PDL_PORTS_EXTERNAL
 void pdl_platform_read_inputs(struct pdl_inputs *in)
 {
     struct sensor_snapshot snap;
@@ -127,6 +133,7 @@ int pdl_platform_start_ports(void)
     }
     return PDL_OK;
 }
+#endif /* PDL_PORTS_EXTERNAL */
 
 /* ---- the cycle thread ---- */
 static struct bsched pdl_outer;

@@ -113,17 +113,19 @@ static uint32_t spin_for(k_ticks_t ticks)
     return spins - before;
 }
 
-/* The overloaded program: at f0 = 64 Hz (16 ticks), a process of about 20
- * ticks (13000 turns of ~6.5 instructions, 3814 per tick). Every cycle overruns;
+/* The overloaded program: at f0 = 64 Hz (16 ticks), a process that computes
+ * for 20 ticks of kernel time (so on any CPU, whatever its speed: a count of
+ * turns made for the CPU32 ran in under a tick on a Cortex-M4). Every cycle overruns;
  * the kernel's reporter prints at most one burst of lines a second and sums
  * the rest, so lower threads run whatever the overrun rate. */
 #define OVERLOAD_HZ 64u
 static volatile uint32_t overload_sink;
+#define OVERLOAD_TICKS 20u
 static void overloaded(void)
 {
-    uint32_t i;
-    for (i = 0; i < 13000u; i++)
-        overload_sink += i;
+    k_ticks_t start = k_ticks();
+    while (k_ticks() - start < OVERLOAD_TICKS)
+        overload_sink++;
 }
 
 static struct k_thread bench_thread, spinner_thread;

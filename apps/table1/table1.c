@@ -30,9 +30,7 @@
 #include "drivers/board.h"
 #include "k_board.h"
 #include "k_bsched.h"
-#include "boards/robocube/duart_console.h"
 #include "drivers/led.h"
-#include "boards/robocube/mc68332.h"
 
 #ifndef TABLE1_MAJOR_CYCLES
 #define TABLE1_MAJOR_CYCLES 4u
@@ -202,13 +200,14 @@ int main(void)
 {
     board_start("table1");
     /* Queued in the console ring; goes out once k_start enables interrupts. */
-    k_printf("\nRoboCube firmware: B-scheduler, Table 1 process set\n");
+    k_printf("\n%s firmware: B-scheduler, Table 1 process set\n", board_name);
     k_printf("nanokernel: tick %lu Hz, B-scheduler thread at priority %u, %lu tick per minor cycle\n",
              (unsigned long)K_TICK_HZ, (unsigned)K_PRIO_APP_MAX,
              (unsigned long)TABLE1_CYCLE_TICKS);
-    k_printf("cpu MC68332 %lu Hz, tick %lu Hz, console %lu baud (interrupt-driven), "
+    k_printf("cpu %s %lu Hz, tick %lu Hz, console %lu baud (interrupt-driven), "
              "bsched capacity %u\n",
-             (unsigned long)CPU_CLOCK_HZ, (unsigned long)K_TICK_HZ, (unsigned long)CONSOLE_BAUD,
+             board_cpu_name, (unsigned long)board_cpu_hz, (unsigned long)K_TICK_HZ,
+             (unsigned long)board_console_baud,
              (unsigned)BSCHED_MAX_PROCS);
     (void)board_spawn(&table1_thread, "table1", table1_main, NULL, table1_stack,
                       sizeof table1_stack, K_PRIO_APP_MIN + 1u);

@@ -1,6 +1,7 @@
 /*
  * The architecture boundary: all the kernel needs from a CPU port.
- * Ports: kernel/arch/cpu32 (the 68332 target, switch.S) and
+ * Ports: kernel/arch/cpu32 (the 68332 target, switch.S), kernel/arch/armv7m
+ * (Cortex-M3/M4: PendSV/SVC switch, the STM32F405 board) and
  * kernel/tests/host/arch (ucontext, for the host unit tests). Each port
  * provides k_arch_ctx.h with struct k_arch_context, found on the include path.
  */

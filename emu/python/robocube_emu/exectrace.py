@@ -53,12 +53,15 @@ def run_until_result(cmd, seconds, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
     return out, err
 
 
-def trace_pcs(qemu, elf, seconds=60.0, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
+def trace_pcs(qemu, elf, seconds=60.0, marker=rb"KTEST RESULT [^\r\n]*\r?\n",
+              machine="robocube", icount=launch.ICOUNT):
+    """The PCs of every instruction `elf` runs on `machine` until the console
+    shows `marker` (or `seconds` pass), and the console text."""
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(tmp) / "exec.log"
         out, _ = run_until_result(
             launch.command(["-serial", "stdio", "-singlestep", "-d", "exec,nochain", "-D", log],
-                           kernel=elf, qemu=qemu), seconds, marker)
+                           kernel=elf, qemu=qemu, icount=icount, machine=machine), seconds, marker)
         pcs = []
         with open(log, errors="replace") as f:
             for line in f:

@@ -34,10 +34,11 @@ def qemu_binary(path=None):
     return path
 
 
-def command(args=(), kernel=None, icount=ICOUNT, qemu=None):
-    """The argument list of one robocube run: no display, no monitor, `kernel`
-    (an ELF run from flash) and `-icount icount` when given, then args."""
-    cmd = [qemu_binary(qemu), "-M", "robocube", "-display", "none", "-monitor", "none"]
+def command(args=(), kernel=None, icount=ICOUNT, qemu=None, machine="robocube"):
+    """The argument list of one run of `machine` (the RoboCube unless another
+    board's, e.g. netduinoplus2 with qemu-system-arm): no display, no monitor,
+    `kernel` (an ELF run from flash) and `-icount icount` when given, then args."""
+    cmd = [qemu_binary(qemu), "-M", machine, "-display", "none", "-monitor", "none"]
     if icount:
         cmd += ["-icount", icount]
     if kernel is not None:
@@ -46,7 +47,31 @@ def command(args=(), kernel=None, icount=ICOUNT, qemu=None):
 
 
 def popen(args=(), kernel=None, icount=ICOUNT, qemu=None, stdin=subprocess.DEVNULL,
-          stdout=subprocess.PIPE, stderr=subprocess.PIPE, **kwargs):
-    """Starts one robocube QEMU (command()) that dies with this process."""
-    return subprocess.Popen(command(args, kernel, icount, qemu), stdin=stdin, stdout=stdout,
+          stdout=subprocess.PIPE, stderr=subprocess.PIPE, machine="robocube", **kwargs):
+    """Starts one QEMU (command()) that dies with this process."""
+    return subprocess.Popen(command(args, kernel, icount, qemu, machine), stdin=stdin, stdout=stdout,
                             stderr=stderr, preexec_fn=die_with_parent, **kwargs)
+
+
+# What differs between the boards the firmware runs on: the QEMU machine, the
+# -icount setting (each board's `make run` value), the one the target suites
+# and the traces use, the binutils prefix, and the first instruction of the
+# tick interrupt (where a tick span starts). The stm32f405's suites run its
+# virtual CPU at 64 ns per instruction instead of make run's 8: what they check
+# is counted in ticks and instructions, never in instructions per tick, and
+# eight times fewer instructions per tick make the long tests eight times
+# shorter to emulate.
+BOARDS = {
+    "robocube": {"machine": "robocube", "icount": "shift=8,sleep=off",
+                 "test_icount": "shift=8,sleep=off",
+                 "cross": "m68k-linux-gnu-", "tick_entry": "k_isr_entry"},
+    "stm32f405": {"machine": "netduinoplus2", "icount": "shift=3,sleep=off",
+                  "test_icount": "shift=6,sleep=off",
+                  "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick"},
+}
+
+
+def board(name=None):
+    """The entry of BOARDS for `name`, else $K_BOARD, else the RoboCube."""
+    return BOARDS[name or os.environ.get("K_BOARD", "robocube")]
+

@@ -98,14 +98,19 @@ class SerialPort:
 
 
 class Machine:
-    """One robocube QEMU process with qtest (optional), QMP and serial sockets."""
+    """One QEMU process (the robocube machine unless told otherwise) with qtest
+    (optional), QMP and serial sockets."""
 
     def __init__(self, kernel=None, qtest=None, extra_args=(), timeout=20.0,
-                 disable_watchdog=True):
+                 disable_watchdog=True, qemu=None, machine="robocube",
+                 serial_names=SERIAL_NAMES):
         """kernel: ELF to run (then the CPU runs, no qtest unless qtest=True).
         disable_watchdog (qtest only): write SYPCR = 0 first, because the SIM
         software watchdog is on at reset (15.6 ms) and would reset the board
-        during clock_step; SYPCR is write-once, so tests of SYPCR pass False."""
+        during clock_step; SYPCR is write-once, so tests of SYPCR pass False.
+        qemu, machine, serial_names: another QEMU binary and machine (the
+        stm32f405 board: qemu-system-arm, netduinoplus2, its one console
+        USART), whose serial ports are served in the same way."""
         self.qtest_enabled = (kernel is None) if qtest is None else qtest
         self.dir = tempfile.mkdtemp(prefix="robocube-")
         self.irq_events = []            # (raise: bool, line) from irq_intercept_*
@@ -117,7 +122,7 @@ class Machine:
         try:
             args = ["-nodefaults"]
             serial_listeners = []
-            for i, name in enumerate(SERIAL_NAMES):
+            for i, name in enumerate(serial_names):
                 path = os.path.join(self.dir, f"serial{i}.sock")
                 lst = self._listen(path)
                 serial_listeners.append(lst)
@@ -137,21 +142,22 @@ class Machine:
                 args += ["-accel", "tcg"]
             args += list(extra_args)
             # icount=None: the run's -icount, if any, comes in extra_args.
-            self.args = launch.command(args, kernel=kernel or None, icount=None)
+            self.args = launch.command(args, kernel=kernel or None, icount=None, qemu=qemu,
+                                       machine=machine)
             self.stderr_path = os.path.join(self.dir, "stderr.log")
             with open(self.stderr_path, "w") as stderr:
-                self.proc = launch.popen(args, kernel=kernel or None, icount=None,
-                                         stdout=subprocess.DEVNULL, stderr=stderr)
+                self.proc = launch.popen(args, kernel=kernel or None, icount=None, qemu=qemu,
+                                         machine=machine, stdout=subprocess.DEVNULL, stderr=stderr)
             # QEMU connects the chardevs, then qtest, then QMP, in this order.
             self.serial = [SerialPort(name, self._accept(lst, timeout))
-                           for name, lst in zip(SERIAL_NAMES, serial_listeners)]
+                           for name, lst in zip(serial_names, serial_listeners)]
             if self.qtest_enabled:
                 self._qtest = self._accept(qtest_listener, timeout)
             # A reply may be slow on a loaded host (once 30 s at a load average
             # of 20 on 2 cores); QMP_REPLY_TIMEOUT bounds the wait all the same.
             self.qmp = QMPLink(sock=self._accept(qmp_listener, timeout),
                                timeout=QMP_REPLY_TIMEOUT)
-            if self.qtest_enabled and disable_watchdog:
+            if self.qtest_enabled and disable_watchdog and machine == "robocube":
                 self.writeb(SYPCR, 0x00)
         except BaseException:
             self.close()

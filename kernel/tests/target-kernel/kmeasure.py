@@ -17,6 +17,9 @@ translation block, no block chaining), then walks the PC sequence:
   sem hand-off: from ktest_before_post in the giver to ktest_after_wait in
                the taker: k_sem_post, waking, switch, return out of k_sem_wait.
 
+K_BOARD=stm32f405 measures the same paths on the ARMv7-M port (qemu-system-arm
+-M netduinoplus2; the tick span starts at the SysTick handler): see BOARDS.
+
 Usage: kmeasure.py [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
 $BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
 """
@@ -25,20 +28,34 @@ import statistics
 import sys
 from pathlib import Path
 
-from robocube_emu.exectrace import spans, symbols, trace_pcs
+from robocube_emu import exectrace, launch
+from robocube_emu.exectrace import spans
 
 ROOT = Path(__file__).resolve().parents[3]
+# The board (robocube_emu.launch.BOARDS): $K_BOARD, the RoboCube by default.
+BOARD = launch.board()
+
+
+def symbols(elf, cross=BOARD["cross"]):
+    return exectrace.symbols(elf, cross)
+
+
+def trace_pcs(qemu, elf, seconds=60.0, marker=rb"KTEST RESULT [^\r\n]*\r?\n"):
+    return exectrace.trace_pcs(qemu, elf, seconds, marker, machine=BOARD["machine"],
+                               icount=BOARD["test_icount"])
 
 
 def measure(qemu, elf):
     sym = symbols(elf)
     pcs, console = trace_pcs(qemu, elf)
     spin = sym["ktest_spin_loop"]
-    # The PIT is routed through the kernel's entry (as every interrupt is):
-    # the span starts at k_isr_entry; ending in the woken sleeper after a
-    # switch means it was the tick (the only interrupt that wakes it).
-    tick = spans(pcs, sym["k_isr_entry"], sym["ktest_after_sleep"],
-                 must_pass=sym["k_arch_switch"], stop_at=sym["k_isr_entry"],
+    # The tick's first instruction (RoboCube: the kernel's entry, where the
+    # PIT is routed; stm32f405: the SysTick handler) starts the span; ending
+    # in the woken sleeper after a switch means it was the tick (the only
+    # interrupt that wakes it).
+    entry = sym[BOARD["tick_entry"]]
+    tick = spans(pcs, entry, sym["ktest_after_sleep"],
+                 must_pass=sym["k_arch_switch"], stop_at=entry,
                  after_range=(spin - 64, spin + 64))
     handoff = spans(pcs, sym["ktest_before_post"], sym["ktest_after_wait"],
                     must_pass=sym["k_arch_switch"])

@@ -11,6 +11,9 @@ Environment (set by `make check-kernel-target`):
   BSCHED_QEMU    qemu-system-m68k with the robocube machine
   K_TARGET_DIR   build/kernel/target
   CROSS_PREFIX   m68k-linux-gnu-
+  K_BOARD        robocube (default) or stm32f405: the same images built for
+                 the ARMv7-M port run on qemu-system-arm -M netduinoplus2
+                 (make check-stm32f405-kernel; kmeasure.BOARDS)
 """
 import os
 import re
@@ -25,6 +28,7 @@ ROOT = Path(__file__).resolve().parents[3]
 QEMU = os.environ.get("BSCHED_QEMU", "")
 IMAGES = Path(os.environ.get("K_TARGET_DIR", ROOT / "build" / "kernel" / "target"))
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
+MACHINE = kmeasure.BOARD["machine"]
 TIME_LIMIT = 60.0  # wall seconds per image
 
 
@@ -34,7 +38,8 @@ def run_image(mode, limit, extra=()):
     assert QEMU and os.access(QEMU, os.X_OK), f"BSCHED_QEMU not executable: {QEMU!r}"
     elf = IMAGES / f"ktest-{mode}.elf"
     assert elf.is_file(), f"missing {elf} (make kernel-target)"
-    cmd = launch.command(["-serial", "stdio", *extra], kernel=elf, qemu=QEMU)
+    cmd = launch.command(["-serial", "stdio", *extra], kernel=elf, qemu=QEMU, machine=MACHINE,
+                         icount=kmeasure.BOARD["test_icount"])
     out, err = run_until_result(cmd, limit)
     return out.decode("latin-1").replace("\r\n", "\n"), err
 
@@ -212,7 +217,7 @@ def test_measure_instruction_counts():
     # k_arch_switch itself, and far fewer than a tick's worth (~3800)
     for counts in (tick, handoff):
         assert 40 < min(counts) and max(counts) < 2000, counts
-    out = ROOT / "build" / "kernel" / "measure.txt"
+    out = IMAGES.parent / "measure.txt"
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(kmeasure.summary("tick interrupt with a context switch", tick) + "\n" +
                    kmeasure.summary("semaphore hand-off between two threads", handoff) + "\n")

@@ -27,12 +27,17 @@ from robocube_emu.exectrace import run_until_result, symbols, trace_pcs
 from robocube_emu.linkmap import input_sections
 
 ROOT = Path(__file__).resolve().parents[3]
+# The board (robocube_emu.launch.BOARDS, $K_BOARD): the RoboCube by default, or stm32f405.
+BOARD = launch.board()
+ICOUNT = ["-icount", BOARD["icount"]]
 SWEEP = (5, 10, 20, 30)
-INSTR_PER_TICK = 1e9 / 1024 / 256      # 256 ns per instruction, 1024 Hz tick
+# 2^shift ns per instruction (RoboCube 256, stm32f405 8), 1024 Hz tick
+INSTR_PER_TICK = 1e9 / 1024 / 2 ** int(re.search(r"shift=(\d+)", ICOUNT[1]).group(1))
 
 
 def run_bench(qemu, elf, seconds=120.0):
-    cmd = launch.command(["-serial", "stdio"], kernel=elf, qemu=qemu)
+    cmd = launch.command(["-serial", "stdio"], kernel=elf, qemu=qemu, machine=BOARD["machine"],
+                         icount=BOARD["icount"])
     out, err = run_until_result(cmd, seconds, rb"PDL-BENCH RESULT [^\r\n]*\r?\n")
     return out.decode("latin-1").replace("\r\n", "\n")
 
@@ -59,9 +64,12 @@ def fit(points):
 
 
 def cycle_costs(qemu, elf, seconds=300.0):
-    sym = symbols(elf)
-    pcs, console = trace_pcs(qemu, elf, seconds, rb"PDL-BENCH SWEEP DONE")
-    vectors = {a for n, a in sym.items() if n.startswith("cpu32_vector")}
+    sym = symbols(elf, BOARD["cross"])
+    pcs, console = trace_pcs(qemu, elf, seconds, rb"PDL-BENCH SWEEP DONE",
+                              machine=BOARD["machine"], icount=BOARD["icount"])
+    # Interrupt entries: a cycle that took one is left out.
+    vectors = {a for n, a in sym.items() if n.startswith("cpu32_vector") or
+               n in ("armv7m_systick", "k_arch_irq_entry", "armv7m_pendsv")}
     bodies = {a for n, a in sym.items() if re.fullmatch(r"bench_p\d+", n)}
     start, run, end = sym["pdl_board_cycle"], sym["pdl_cycle_run"], sym["pdl_cycle_end"]
     ticks, marker = sym["k_ticks"], sym["bench_config_start"]

@@ -1,0 +1,111 @@
+/*
+ * The shared start-up of the firmware images (drivers/board.h) and the
+ * status LED (drivers/led.h) on the STM32F405: the same interface the
+ * RoboCube's drivers/board.c and drivers/led.c give, so an image that uses
+ * only the kernel, the console and the LED builds for either board.
+ */
+#include "drivers/board.h"
+#include "drivers/led.h"
+
+#include "k_board.h"
+#include "armv7m.h"
+#include "stm32f405.h"
+#include "kernel/lib/kstring.h"
+
+const char board_name[] = "STM32F405";
+const char board_cpu_name[] = "Cortex-M4 (STM32F405)";
+const uint32_t board_cpu_hz = STM32F405_CPU_HZ;
+const uint32_t board_console_baud = CONSOLE_BAUD_STM32;
+
+/* QEMU does not model the GPIO ports (writes are ignored): the LED's state
+ * is kept here too, so led_is_on tells what the pin was set to. */
+static bool led_on;
+
+void led_init(void)
+{
+    RCC_AHB1ENR |= RCC_AHB1ENR_GPIOAEN;
+    GPIO_MODER(GPIOA_BASE) = (GPIO_MODER(GPIOA_BASE) & ~(3u << (2u * LED_PIN))) |
+                             (1u << (2u * LED_PIN)); /* output */
+    led_set(false);
+}
+
+void led_set(bool on)
+{
+    led_on = on;
+    GPIO_BSRR(GPIOA_BASE) = on ? (1u << LED_PIN) : (1u << (LED_PIN + 16u));
+}
+
+void led_toggle(void)
+{
+    led_set(!led_on);
+}
+
+bool led_is_on(void)
+{
+    return led_on;
+}
+
+static void board_say(const char *image, const char *why)
+{
+    k_console_write_sync(image, strlen(image));
+    k_console_write_sync(": ", 2u);
+    k_console_write_sync(why, strlen(why));
+}
+
+void board_halt(const char *image, const char *why)
+{
+    board_say(image, why);
+    armv7m_halt();
+}
+
+/* ARM semihosting SYS_EXIT (ADP_Stopped_ApplicationExit): QEMU, started with
+ * -semihosting-config enable=on (make run does), ends the emulation; a real
+ * board without a debugger attached would fault on the BKPT, so it only
+ * comes after the message, and the fault handler halts. */
+void board_power_off(const char *image, const char *why)
+{
+    register uint32_t op __asm__("r0") = 0x18u;
+    register uint32_t arg __asm__("r1") = 0x20026u;
+    board_say(image, why);
+    __asm__ __volatile__("bkpt 0xab" : : "r"(op), "r"(arg) : "memory");
+    armv7m_halt();
+}
+
+void board_start(const char *image)
+{
+    k_init();
+    led_init();
+    if (k_board_init() != 0)
+        board_halt(image, "k_board_init failed: no console interrupt or no SysTick rate for K_TICK_HZ\n");
+}
+
+int board_spawn(struct k_thread *t, const char *name, k_thread_fn entry, void *arg,
+                uint32_t *stack, size_t stack_bytes, unsigned prio)
+{
+    int rc = k_thread_create(t, name, entry, arg, stack, stack_bytes, prio);
+    if (rc != K_OK)
+        k_printf("cannot create thread '%s': error %d\n", name, rc);
+    return rc;
+}
+
+/* picolibc's stdio (printf, puts) writes through the kernel console, as
+ * newlib's does on the RoboCube (drivers/libc_syscalls.c). */
+#include <stdio.h>
+#include <stdlib.h>
+
+static int board_stdio_putc(char c, FILE *f)
+{
+    (void)f;
+    return k_console_write(&c, 1u) == 1u ? (unsigned char)c : EOF;
+}
+static FILE board_stdio = FDEV_SETUP_STREAM(board_stdio_putc, NULL, NULL, _FDEV_SETUP_WRITE);
+FILE *const stdout = &board_stdio;
+FILE *const stderr = &board_stdio;
+FILE *const stdin = NULL;
+
+/* exit() and abort() end here: the board halts, as on the RoboCube. */
+void _exit(int status)
+{
+    k_printf("exit(%d): halted\n", status);
+    board_halt("main", "exit called\n");
+}

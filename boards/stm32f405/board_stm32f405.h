@@ -1,0 +1,23 @@
+/* What the STM32F405 board offers beyond the kernel's board interface. */
+#ifndef BOARD_STM32F405_H
+#define BOARD_STM32F405_H
+
+#include <stdint.h>
+
+/* Calls fn(byte) in the console's interrupt for every received byte
+ * (NULL: reception off). */
+void stm32f405_console_rx_attach(void (*fn)(uint8_t byte));
+
+
+
+/* The simulated part of the PDL ports (pdl_ports_stm32f405.c). */
+struct stm32f405_sim_io {
+    uint16_t bio;            /* PDL_BIO_OUT writes, PDL_BIO_IN reads */
+    uint8_t binin;           /* PDL_BINARY_IN reads */
+    int32_t motor[4];
+    int32_t analog_out[8];
+    int32_t fast_out[8];
+    uint32_t adc_no_eoc;     /* ADC conversions read without EOC (QEMU's model) */
+};
+extern struct stm32f405_sim_io stm32f405_sim_io;
+#endif /* BOARD_STM32F405_H */

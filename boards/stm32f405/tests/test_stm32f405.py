@@ -1,0 +1,178 @@
+"""The firmware on the stm32f405 board (qemu-system-arm -M netduinoplus2):
+table1 through `make run`, the fault reports of the ARMv7-M port, and make
+run's refusals (an unknown board, an image that needs the RoboCube).
+
+Environment (set by `make check-stm32f405-firmware`):
+  STM32_BUILD    build/stm32f405 (images)
+  QEMU_ARM       qemu-system-arm
+  STM32_ICOUNT   the -icount setting of make run on this board
+"""
+import os
+import re
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+import robocube_emu
+from test_firmware_boot import check_table1_text
+
+ROOT = Path(__file__).resolve().parents[3]
+BUILD = Path(os.environ.get("STM32_BUILD", ROOT / "build" / "stm32f405"))
+QEMU = os.environ.get("QEMU_ARM", "qemu-system-arm")
+ICOUNT = os.environ.get("STM32_ICOUNT", "shift=3,sleep=off")
+
+
+def make(*args, timeout=120):
+    env = dict(os.environ)
+    env.pop("MAKEFLAGS", None)
+    env.pop("MAKELEVEL", None)
+    return subprocess.run(["make", "--no-print-directory", *args], cwd=ROOT, env=env,
+                          capture_output=True, text=True, timeout=timeout)
+
+
+def boot(elf):
+    """The image on netduinoplus2, its console (USART1) on a qtestlib socket.
+    QEMU starts paused (-S) and continues once QMP is connected: a guest that
+    idles under -icount sleep=off keeps QEMU's main loop so busy that QMP's
+    greeting could miss qtestlib's connect timeout."""
+    m = robocube_emu.Machine(kernel=elf, qemu=QEMU, machine="netduinoplus2",
+                         serial_names=("console",), extra_args=["-icount", ICOUNT, "-S"])
+    m.qmp_cmd("cont")
+    return m
+
+
+def symbol(elf, name):
+    out = subprocess.run(["arm-none-eabi-nm", str(elf)], check=True, capture_output=True,
+                         text=True).stdout
+    for line in out.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[2] == name:
+            return int(parts[0], 16)
+    raise AssertionError(f"symbol {name} not in {elf}")
+
+
+def test_make_run_table1_prints_table2():
+    """make run BOARD=stm32f405 APP=table1: the unchanged bsched.c in the
+    kernel's B-scheduler thread prints the paper's Table 2, as on the RoboCube."""
+    r = make("run", "BOARD=stm32f405", "APP=table1", "RUN_SECONDS=5")
+    assert r.returncode == 0, r.stderr
+    text = r.stdout.replace("\r\n", "\n")
+    assert "STM32F405 firmware: B-scheduler, Table 1 process set" in text
+    assert "cpu Cortex-M4 (STM32F405) 168000000 Hz" in text
+    check_table1_text(text)
+    assert "qemu-system-arm -M netduinoplus2" in r.stderr   # make run's banner
+
+
+def test_table1_runs_in_virtual_time():
+    """Under -icount the run repeats exactly: the same console text twice."""
+    elf = BUILD / "table1" / "table1.elf"
+    texts = []
+    for _ in range(2):
+        with boot(elf) as m:
+            texts.append(m.console.read_until(b"table1 done at tick", 20.0))
+    assert texts[0] == texts[1]
+
+
+FAULTS = {
+    # kind: (exception number, name, CFSR bit, what the reporter says, stack)
+    "unmapped": (5, "BusFault", 1 << 9, "precise data bus error", "main"),
+    "undef": (6, "UsageFault", 1 << 16, "undefined instruction", "main"),
+    "divzero": (6, "UsageFault", 1 << 25, "divide by zero", "main"),
+    "thread": (5, "BusFault", 1 << 9, "precise data bus error", "thread, process"),
+}
+REPORT = (r"\*\*\* EXCEPTION vector=(\d+) \((\w+)\) pc=0x([0-9a-f]{8}) xpsr=0x([0-9a-f]{8}) "
+          r"lr=0x([0-9a-f]{8}) cfsr=0x([0-9a-f]{8}) hfsr=0x([0-9a-f]{8})")
+
+
+@pytest.mark.parametrize("kind", sorted(FAULTS))
+def test_fault_report_names_the_instruction(kind):
+    exc, name, bit, what, stack = FAULTS[kind]
+    elf = BUILD / "tests" / f"fault-{kind}.elf"
+    insn = symbol(elf, "fault_instruction")
+    with boot(elf) as m:
+        text = m.console.read_until(b"*** halted", 10.0).decode("latin-1").replace("\r\n", "\n")
+        time.sleep(0.2)
+        assert m.proc.poll() is None, "QEMU itself stopped: " + m.stderr()
+    assert f"faulting instruction at 0x{insn:08x}" in text
+    assert "no exception was taken" not in text
+    # start.c copied .data and cleared .bss
+    assert "startup: data_check=0x5a17c0de bss_check=0x00000000" in text
+    r = re.search(REPORT, text)
+    assert r, text
+    assert int(r.group(1)) == exc and r.group(2) == name
+    assert int(r.group(3), 16) == insn, "the stacked PC is the faulting instruction"
+    assert int(r.group(4), 16) & (1 << 24), "xPSR Thumb bit"
+    assert int(r.group(6), 16) & bit and f"  {what}\n" in text
+    assert f"{stack} stack)" in text
+    if name == "BusFault":
+        assert "BusFault address 0x5a000000" in text
+        assert "R0=5a000000" in text                  # the stacked R0: the address loaded
+    if kind == "thread":
+        assert "in thread 'faulter'" in text
+
+
+def test_make_run_refuses_an_unknown_board():
+    r = make("run", "BOARD=pdp11", "APP=table1")
+    assert r.returncode == 2
+    lines = [line for line in r.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1, r.stderr
+    assert "BOARD=pdp11: no such board" in lines[0] and "robocube|stm32f405" in lines[0]
+
+
+def test_image_that_needs_the_robocube_says_so():
+    """iotest drives the RoboCube's I/O board: built for stm32f405 it stops
+    before compiling anything, naming the RoboCube headers it needs."""
+    r = make("firmware", "BOARD=stm32f405", "APP=iotest")
+    assert r.returncode == 2
+    lines = [line for line in r.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1, r.stderr
+    assert "APP=iotest needs the RoboCube's hardware (" in lines[0]
+    assert "drivers/" in lines[0] and "BOARD=robocube only" in lines[0]
+    assert not (BUILD / "iotest").exists()
+
+
+def test_pdl_program_with_the_boards_ports():
+    """A PDL program on this board's ports: ADC1 channel 0 copied to TIM3's
+    PWM channel 0 (read back from the timer), a simulated BIO line written and
+    read back every cycle, no overrun in one second of cycles."""
+    with boot(BUILD / "tests" / "pdl-ports.elf") as m:
+        line = m.console.read_until(b"\n", 20.0).decode()
+        while "PDL-PORTS" not in line:
+            line = m.console.read_until(b"\n", 20.0).decode()
+    f = {k: int(v, 0) for k, v in re.findall(r"(\w+)=(\S+)", line)}
+    assert "FAIL" not in line, line
+    assert 100 <= f["cycles"] <= 104 and f["overruns"] == 0, line    # ~100 Hz for 1 s
+    assert f["adc_max"] > f["adc_min"], "the ADC gave one value only"   # QEMU: +7 per conversion
+    assert f["ccr1"] == f["pwm"] and 0 <= f["pwm"] <= 510, "TIM3 CCR1 is the PWM actuator"
+    assert f["loop_ok"] == f["cycles"] and f["loop_bad"] == 0, line
+    assert f["adc_no_eoc"] > 0      # documented: QEMU's ADC never sets EOC
+
+
+def test_pdl_hello_as_an_ordinary_program():
+    """apps/pdl_hello unchanged (printf through picolibc, main as a thread)."""
+    with boot(BUILD / "pdl_hello" / "pdl_hello.elf") as m:
+        text = m.console.read_until(b"t=3 s", 20.0)
+        text += m.console.read_until(b"\n", 5.0)
+    rows = re.findall(rb"t=(\d) s wheels=(-?\d+),(-?\d+) runs: cruise=(\d+) avoid=(\d+)", text)
+    assert [int(r[0]) for r in rows] == [1, 2, 3], text
+    for second, _left, _right, cruise, avoid in rows:
+        assert abs(int(cruise) - 102 * int(second)) <= 3, text   # every cycle, ~102.4 Hz
+        assert abs(int(avoid) - 51 * int(second)) <= 2, text     # every second cycle
+
+
+def test_pdl_bench_passes_on_this_board():
+    """apps/pdl_bench: no overrun at f0 = 1024 Hz with 20 processes and 40
+    quantities, and its overloaded program's overruns counted and reported."""
+    with boot(BUILD / "pdl_bench" / "pdl_bench.elf") as m:
+        text = m.console.read_until(b"PDL-BENCH RESULT", 60.0)
+        text += m.console.read_until(b"\n", 5.0)
+    text = text.decode("latin-1").replace("\r\n", "\n")
+    assert "PDL-BENCH RESULT PASS" in text, text
+    load = dict(re.findall(r"(\w+)=(\d+)", re.search(r"PDL-BENCH load .*", text).group(0)))
+    assert int(load["overruns"]) == 0 and int(load["load_permille"]) <= 500
+    over = dict(re.findall(r"(\w+)=(\d+)", re.search(r"PDL-BENCH overload .*", text).group(0)))
+    assert int(over["overruns"]) >= int(over["cycles"]) > 0
+    assert int(over["max_cycle_ticks"]) > 16            # longer than its 16-tick period
+    assert re.search(r"bsched: overrun in minor cycle \d+: \d+ ticks late", text), text
