@@ -74,7 +74,7 @@ def symbols(path, defined_text_only=True, cross=CROSS):
 def cpu32_run(elf, qemu, objs, cycles, seconds=900, machine="robocube",
               icount="shift=8,sleep=off", cross=CROSS):
     """The image's phases on a board: the RoboCube by default, or (machine,
-    icount, cross) another one (the stm32f405's, boards/stm32f405/bench_cpus.py)."""
+    icount, cross) another one (the stm32f405's, bench/bench_cpus.py)."""
     elf_syms = symbols(elf, cross=cross)
     names = set()
     for obj in objs:

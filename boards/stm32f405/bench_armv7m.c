@@ -1,5 +1,5 @@
 /*
- * The Cortex-M4 side of the two-CPU bench (boards/stm32f405/bench_cpus.py):
+ * The Cortex-M4 side of the two-CPU bench (bench/bench_cpus.py):
  * the phases of bsched/bench/bench_cpu32.c (bsched_init, bsched_fig7_start,
  * BENCH_CYCLES minor cycles of Fig. 7, the same of bsched_step), each ended
  * by bench_mark(), on the stm32f405 board with its polled console. The

@@ -56,7 +56,7 @@ stm32_needs = $(strip $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(call stm3
                   $(if $($(1)_RUNNER),its runner (the RoboCube world co-simulation)))
 # The PDL runtime with this board's ports, for images that include pdl/.
 STM32_PDL_SRCS := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c pdl/pdl_board.c \
-                  boards/stm32f405/pdl_ports_stm32f405.c
+                  pdl/stm32f405/pdl_ports_stm32f405.c
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
@@ -190,7 +190,7 @@ bench-cpus:
 	@$(MAKE) --no-print-directory $(BENCH_DIR)/bench-cpu32.elf $(STM32_BENCH_ELF) \
 	    $(K_BUILD)/target/ktest-measure.elf $(STM32_K_DIR)/ktest-measure.elf \
 	    $(call app_elf,pdl_bench) $(call stm32_elf,pdl_bench)
-	@flock /tmp/bsched-heavy.lock $(PYTHON) boards/stm32f405/bench_cpus.py --cycles $(BENCH_CYCLES) \
+	@flock /tmp/bsched-heavy.lock $(PYTHON) bench/bench_cpus.py --cycles $(BENCH_CYCLES) \
 	    --robocube-bench $(BENCH_DIR)/bench-cpu32.elf --robocube-ktest $(K_BUILD)/target/ktest-measure.elf \
 	    --robocube-pdl $(call app_elf,pdl_bench) --robocube-qemu $(QEMU_M68K) \
 	    --stm32f405-bench $(STM32_BENCH_ELF) --stm32f405-ktest $(STM32_K_DIR)/ktest-measure.elf \

@@ -16,7 +16,7 @@
  */
 #include "pdl/pdl_internal.h"
 #include "drivers/led.h"
-#include "stm32f405.h"
+#include "boards/stm32f405/stm32f405.h"
 #include "boards/stm32f405/board_stm32f405.h"
 
 struct stm32f405_sim_io stm32f405_sim_io;

@@ -21,7 +21,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]
 for sub in ("bench", "kernel/tests/target-kernel", "pdl/tests/target"):
     sys.path.insert(0, str(ROOT / sub))
 
