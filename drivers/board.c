@@ -5,8 +5,8 @@
 #include "k_board.h"
 #include "kernel/lib/kstring.h"
 #include "drivers/led.h"
-#include "drivers/duart_console.h"
-#include "mc68332.h"
+#include "boards/robocube/duart_console.h"
+#include "boards/robocube/mc68332.h"
 
 const char board_name[] = "RoboCube";
 const char board_cpu_name[] = "MC68332";
