@@ -43,11 +43,13 @@ def soak_unpack(msg):
     return sender, number
 
 
-def show_live(boards, period=0.2):
+def show_live(boards, stop, period=0.2):
     """Prints each board's console lines as they come, "station N: LINE"
-    (--live: make run APP=netnode)."""
+    (--live: make run APP=netnode), until `stop` is set; then one last pass, so
+    that what a board wrote just before the end is shown too."""
     shown = [0] * len(boards)
     while True:
+        last = stop.is_set()
         for i, b in enumerate(boards):
             text = b.text()
             end = text.rfind("\n") + 1
@@ -56,7 +58,9 @@ def show_live(boards, period=0.2):
                 if line.strip() and "terminating on signal" not in line:
                     print(f"station {b.station}: {line}", flush=True)
             shown[i] = max(shown[i], end)
-        time.sleep(period)
+        if last:
+            return
+        stop.wait(period)
 
 
 def run(args):
@@ -78,8 +82,10 @@ def run(args):
         for n, station in enumerate(host_stations):
             hosts.append(HostSoak(Peer(MediumTransport(sock), station, seed=args.seed + n,
                                        fec=args.fec), args.boards, args.messages))
+        live_stop = threading.Event()
+        live = threading.Thread(target=show_live, args=(boards, live_stop), daemon=True)
         if args.live:
-            threading.Thread(target=show_live, args=(boards,), daemon=True).start()
+            live.start()
         senders = [threading.Thread(target=h.send_all, daemon=True) for h in hosts]
         for t in senders:
             t.start()
@@ -91,6 +97,9 @@ def run(args):
                 print(f"net-soak: station {b.station} did not finish; console:\n{b.text()}")
         for h in hosts:                # 10 s of the boards' time for the last ACKs
             h.peer.t.clock.wait_until(h.peer.t.clock.now() + 10, h.all_in, poll=0.1)
+        if live.is_alive():           # the boards' last lines, before they stop
+            live_stop.set()
+            live.join(10)
     finally:
         for b in boards:
             b.stop()
