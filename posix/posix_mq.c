@@ -225,12 +225,31 @@ static int posix_mq_wait_for(const struct posix_mqd *d, const struct timespec *a
     return *ticks == K_NO_WAIT ? ETIMEDOUT : 0;
 }
 
+/* Moves one slot into (sending) or out of d's queue: at once if it can,
+ * else waiting as posix_mq_wait_for says. 0 or the error number. */
+static int posix_mq_transfer(const struct posix_mqd *d, struct posix_mq_slot *slot, int sending,
+                             const struct timespec *abstime, int timed)
+{
+    k_ticks_t ticks = K_NO_WAIT;
+    int r, tries;
+    /* POSIX: the time is checked only when the queue is full (empty). */
+    for (tries = 0; tries < 2; tries++) {
+        r = sending ? k_mq_send_ticks(&d->mq->q, slot, ticks)
+                    : k_mq_receive_ticks(&d->mq->q, slot, ticks);
+        if (r != K_EAGAIN || tries > 0)
+            break;
+        r = posix_mq_wait_for(d, abstime, timed, &ticks);
+        if (r != 0)
+            return r;
+    }
+    return r == K_OK ? 0 : posix_errno(r);
+}
+
 static int posix_mq_send(mqd_t mqdes, const char *msg_ptr, size_t msg_len, unsigned msg_prio,
                          const struct timespec *abstime, int timed)
 {
     struct posix_mqd *d = posix_mqd_of(mqdes);
     struct posix_mq_slot slot;
-    k_ticks_t ticks;
     int r;
     if (d == NULL)
         return -1;
@@ -243,17 +262,8 @@ static int posix_mq_send(mqd_t mqdes, const char *msg_ptr, size_t msg_len, unsig
     slot.len = (uint32_t)msg_len;
     if (msg_len > 0u)
         memcpy(slot.data, msg_ptr, msg_len);
-    /* POSIX: the time is checked only when the queue is full. */
-    r = k_mq_send_ticks(&d->mq->q, &slot, K_NO_WAIT);
-    if (r == K_EAGAIN) {
-        r = posix_mq_wait_for(d, abstime, timed, &ticks);
-        if (r != 0)
-            return posix_mq_fail(r);
-        r = k_mq_send_ticks(&d->mq->q, &slot, ticks);
-        if (r == K_ETIMEDOUT)
-            return posix_mq_fail(ETIMEDOUT);
-    }
-    return r == K_OK ? 0 : posix_mq_fail(posix_errno(r));
+    r = posix_mq_transfer(d, &slot, 1, abstime, timed);
+    return r == 0 ? 0 : posix_mq_fail(r);
 }
 
 int mq_send(mqd_t mqdes, const char *msg_ptr, size_t msg_len, unsigned msg_prio)
@@ -272,7 +282,6 @@ static ssize_t posix_mq_receive(mqd_t mqdes, char *msg_ptr, size_t msg_len, unsi
 {
     struct posix_mqd *d = posix_mqd_of(mqdes);
     struct posix_mq_slot slot;
-    k_ticks_t ticks;
     int r;
     if (d == NULL)
         return -1;
@@ -282,17 +291,9 @@ static ssize_t posix_mq_receive(mqd_t mqdes, char *msg_ptr, size_t msg_len, unsi
         return posix_mq_fail(EINVAL);
     if (msg_len < (size_t)d->mq->msgsize)
         return posix_mq_fail(EMSGSIZE);
-    r = k_mq_receive_ticks(&d->mq->q, &slot, K_NO_WAIT);
-    if (r == K_EAGAIN) {
-        r = posix_mq_wait_for(d, abstime, timed, &ticks);
-        if (r != 0)
-            return posix_mq_fail(r);
-        r = k_mq_receive_ticks(&d->mq->q, &slot, ticks);
-        if (r == K_ETIMEDOUT)
-            return posix_mq_fail(ETIMEDOUT);
-    }
-    if (r != K_OK)
-        return posix_mq_fail(posix_errno(r));
+    r = posix_mq_transfer(d, &slot, 0, abstime, timed);
+    if (r != 0)
+        return posix_mq_fail(r);
     memcpy(msg_ptr, slot.data, slot.len);
     if (msg_prio != NULL)
         *msg_prio = 0;
