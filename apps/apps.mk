@@ -15,6 +15,8 @@
 #   NAME_TICK_HZ   kernel tick rate (default 1024)
 #   NAME_CFLAGS    extra compiler flags for the image's own sources and libraries
 #   NAME_SRCS      the image's sources (default apps/NAME/*.c)
+#   NAME_SRCS_BOARD  its sources on another board (e.g. shell_SRCS_stm32f405),
+#                  for an image with a part per board; default NAME_SRCS
 #   NAME_RUN_ARGS  extra QEMU arguments for make run (serial ports, QMP, ...)
 #   NAME_ICOUNT    the -icount setting for make run (default $(FW_ICOUNT))
 #   NAME_RUNNER    a host command that make run starts instead of QEMU on the

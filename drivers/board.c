@@ -1,12 +1,15 @@
-/* The shared start-up of the firmware images; see board.h. */
+/* The RoboCube's side of the board interface (board.h): start-up, halt,
+ * power-off and the console's receiver. What every board shares is in
+ * board_common.c. */
 #include "drivers/board.h"
 
 #include "kernel/arch/cpu32/cpu.h"
 #include "k_board.h"
-#include "kernel/lib/kstring.h"
 #include "drivers/led.h"
+#include "boards/robocube/duart.h"
 #include "boards/robocube/duart_console.h"
 #include "boards/robocube/mc68332.h"
+#include "boards/robocube/mc68681.h"
 
 const char board_name[] = "RoboCube";
 const char board_cpu_name[] = "MC68332";
@@ -15,17 +18,13 @@ const uint32_t board_console_baud = CONSOLE_BAUD;
 
 void board_halt(const char *image, const char *why)
 {
-    k_console_write_sync(image, strlen(image));
-    k_console_write_sync(": ", 2u);
-    k_console_write_sync(why, strlen(why));
+    board_say(image, why);
     cpu32_halt();
 }
 
 void board_power_off(const char *image, const char *why)
 {
-    k_console_write_sync(image, strlen(image));
-    k_console_write_sync(": ", 2u);
-    k_console_write_sync(why, strlen(why));
+    board_say(image, why);
     for (;;) /* a level-7 interrupt would wake it: off again */
         __asm__ __volatile__("lpstop #0x2700" : : : "memory");
 }
@@ -38,11 +37,46 @@ void board_start(const char *image)
         board_halt(image, "k_board_init failed: no console interrupt or no PIT rate for K_TICK_HZ\n");
 }
 
-int board_spawn(struct k_thread *t, const char *name, k_thread_fn entry, void *arg,
-                uint32_t *stack, size_t stack_bytes, unsigned prio)
+/* The console's receiver: DUART channel B's RxRDYB interrupt, attached
+ * through the DUART's shared handler (boards/robocube/duart.h). */
+#define RX_SR_ERRORS 0xF0u       /* received break, framing, parity, overrun */
+static board_console_rx_sink rx_sink;
+
+static void console_rx_isr(uint8_t pending, void *arg)
 {
-    int rc = k_thread_create(t, name, entry, arg, stack, stack_bytes, prio);
-    if (rc != K_OK)
-        k_printf("cannot create thread '%s': error %d\n", name, rc);
-    return rc;
+    (void)pending;
+    (void)arg;
+    for (;;) {
+        uint8_t sr = DUART_REG(DUART_SRB);
+        unsigned flags = 0;
+        if ((sr & DUART_SR_RXRDY) == 0u)
+            break;
+        if ((sr & RX_SR_ERRORS) != 0u) {
+            flags = (sr & DUART_SR_OVERRUN) != 0u ? BOARD_RX_OVERRUN : BOARD_RX_ERROR;
+            DUART_REG(DUART_CRB) = DUART_CR_RESET_ERROR;
+        }
+        if (!rx_sink(DUART_REG(DUART_RBB), flags)) {
+            /* full: the rest waits in the FIFO (the host, or the chip, holds it) */
+            duart_imr_update(0, DUART_INT_RXRDYB);
+            break;
+        }
+    }
+}
+
+int board_console_rx_start(board_console_rx_sink sink)
+{
+    if (sink == NULL || rx_sink != NULL)
+        return -1;
+    rx_sink = sink;
+    if (duart_irq_attach(DUART_INT_RXRDYB, console_rx_isr, NULL) != 0) {
+        rx_sink = NULL;
+        return -1;
+    }
+    duart_imr_update(DUART_INT_RXRDYB, 0);
+    return 0;
+}
+
+void board_console_rx_resume(void)
+{
+    duart_imr_update(DUART_INT_RXRDYB, 0);
 }

@@ -2,52 +2,36 @@
 #include "console_in.h"
 
 #include "kernel.h"
+#include "drivers/board.h"
 #include "drivers/drv_err.h"
-#include "boards/robocube/duart.h"
 #include "drivers/line_edit.h"
-#include "boards/robocube/mc68681.h"
-
-#define SR_ERRORS 0xF0u            /* received break, framing, parity, overrun */
 
 static uint8_t rx_buf[CONSOLE_IN_RING];
 static struct k_ring rx_ring;
 static struct k_sem rx_ready;      /* posted by the interrupt when bytes arrive */
-static volatile int rx_paused;     /* the ring filled: RxRDYB masked until drained */
+static volatile int rx_paused;     /* the ring filled: the board holds the bytes */
 static int initialised;
 static int echo_on = 1;
 static char line_buf[CONSOLE_IN_LINE_MAX + 1u];
 static struct line_edit editor;
 static struct console_in_stats stats;
 
-static void console_rx_isr(uint8_t pending, void *arg)
+/* The board's receive interrupt, one byte at a time: into the ring; 0 (the
+ * board then pauses) when that filled it. */
+static int console_rx_byte(uint8_t byte, unsigned flags)
 {
-    int got = 0;
-    (void)pending;
-    (void)arg;
-    for (;;) {
-        uint8_t sr = DUART_REG(DUART_SRB);
-        if ((sr & DUART_SR_RXRDY) == 0u)
-            break;
-        if (k_ring_free(&rx_ring) == 0u) {
-            /* leave the byte in the FIFO: the host (or the chip) holds the rest */
-            duart_imr_update(0, DUART_INT_RXRDYB);
-            rx_paused = 1;
-            stats.ring_full++;
-            break;
-        }
-        if ((sr & SR_ERRORS) != 0u) {
-            if ((sr & DUART_SR_OVERRUN) != 0u)
-                stats.overruns++;
-            else
-                stats.errors++;
-            DUART_REG(DUART_CRB) = DUART_CR_RESET_ERROR;
-        }
-        (void)k_ring_put(&rx_ring, DUART_REG(DUART_RBB));
-        stats.bytes++;
-        got = 1;
-    }
-    if (got)
-        (void)k_sem_post(&rx_ready);
+    if ((flags & BOARD_RX_OVERRUN) != 0u)
+        stats.overruns++;
+    else if ((flags & BOARD_RX_ERROR) != 0u)
+        stats.errors++;
+    (void)k_ring_put(&rx_ring, byte);
+    stats.bytes++;
+    (void)k_sem_post(&rx_ready); /* a binary semaphore: at most one wake-up kept */
+    if (k_ring_free(&rx_ring) > 0u)
+        return 1;
+    rx_paused = 1;
+    stats.ring_full++;
+    return 0;
 }
 
 int console_in_init(void)
@@ -58,10 +42,9 @@ int console_in_init(void)
     (void)k_sem_init(&rx_ready, 0, 1);
     line_edit_init(&editor, line_buf, sizeof line_buf);
     rx_paused = 0;
-    if (duart_irq_attach(DUART_INT_RXRDYB, console_rx_isr, NULL) != 0)
+    if (board_console_rx_start(console_rx_byte) != 0)
         return DRV_ERR_STATE;
     initialised = 1;
-    duart_imr_update(DUART_INT_RXRDYB, 0);
     return DRV_OK;
 }
 
@@ -80,15 +63,16 @@ void console_in_stats(struct console_in_stats *out)
 /* One byte from the ring, resuming reception once there is room again. */
 static int ring_take(uint8_t *byte)
 {
-    if (!k_ring_get(&rx_ring, byte))
-        return 0;
-    if (rx_paused && k_ring_free(&rx_ring) >= CONSOLE_IN_RING / 2u) {
+    int got;
+    uint32_t s = k_arch_irq_save();
+    got = k_ring_get(&rx_ring, byte);
+    if (got && rx_paused && k_ring_free(&rx_ring) >= CONSOLE_IN_RING / 2u) {
         rx_paused = 0;
-        duart_imr_update(DUART_INT_RXRDYB, 0);
+        board_console_rx_resume();
     }
-    return 1;
+    k_arch_irq_restore(s);
+    return got;
 }
-
 /* Waits until the deadline for the interrupt to bring something. */
 static int wait_bytes(k_ticks_t deadline)
 {

@@ -1,13 +1,15 @@
 /*
- * Interrupt-driven console input on DUART channel B (the console's receiver;
- * output is the kernel's console in k_board_robocube.c).
+ * Interrupt-driven console input, on any board: the board's receiver
+ * (board_console_rx_start in drivers/board.h: the RoboCube's DUART channel B,
+ * the STM32F405's USART1) hands each received byte to this module in its
+ * interrupt; output is the kernel's console (k_console_write).
  *
- * The RxRDYB interrupt (attached through boards/robocube/duart.h) moves received
- * bytes into a ring; a reading thread waits on a semaphore with a bounded
- * timeout. When the ring is full the interrupt masks itself and leaves the
- * bytes in the DUART's receive FIFO until the reader has made room, so a
+ * The bytes go into a ring; a reading thread waits on a semaphore with a
+ * bounded timeout. When the ring is full the board stops taking bytes and
+ * leaves them in its chip until the reader has drained half the ring, so a
  * slow reader loses nothing to the ring (a sender that keeps typing past the
- * 3-byte FIFO still overruns the chip; those losses are counted).
+ * chip's FIFO, 3 bytes on the DUART, still overruns the chip; those losses
+ * are counted).
  *
  * One reader thread at a time (the shell); lines are assembled and edited by
  * drivers/line_edit.h and echoed to the console while echo is on.
@@ -25,9 +27,9 @@
  * arithmetic far from wrapping). */
 #define CONSOLE_IN_TIMEOUT_MAX_MS 86400000u
 
-/* Attaches the receive interrupt and unmasks it; call after k_board_init.
- * DRV_OK, or DRV_ERR_STATE if the DUART handler slots are taken or it was
- * already initialised. */
+/* Starts the board's receiver; call after k_board_init. DRV_OK, or
+ * DRV_ERR_STATE if the receiver is taken (on the RoboCube: the DUART's
+ * handler slots) or it was already initialised. */
 int console_in_init(void);
 
 /* Echo of typed characters (and line editing) to the console: on by default. */
@@ -50,7 +52,7 @@ int console_read_line(char *buf, size_t size, uint32_t timeout_ms);
 /* Counters since init. */
 struct console_in_stats {
     uint32_t bytes;          /* received into the ring */
-    uint32_t overruns;       /* DUART receive overruns (characters lost in the chip) */
+    uint32_t overruns;       /* receive overruns (characters lost in the chip) */
     uint32_t errors;         /* framing / parity errors / received breaks */
     uint32_t ring_full;      /* times the ring filled and reception paused */
     uint32_t lines;          /* lines returned */

@@ -9,7 +9,7 @@
 
 K_BUILD      := $(BUILD)/kernel
 K_CORE_SRCS  := kernel/k_struct.c kernel/k_sched.c kernel/k_sync.c kernel/k_mq.c \
-                kernel/k_irq.c kernel/k_fmt.c kernel/k_bsched.c
+                kernel/k_irq.c kernel/k_fmt.c kernel/k_bsched.c kernel/k_console_tx.c
 # The formatter is the firmware's (kernel/lib/kprintf.c); on the target it
 # comes with the firmware base objects.
 K_HOST_LIB   := kernel/lib/kprintf.c

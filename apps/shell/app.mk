@@ -18,3 +18,6 @@ check-shell-target:
 	    ci/pytest-suite shell-target apps/shell/tests
 # Its main starts the board itself (board_start ... k_start).
 shell_BOOT := self
+# The interpreter and the common commands, and the board's part (shell.h).
+shell_SRCS           := apps/shell/shell.c apps/shell/shell_main.c apps/shell/shell_robocube.c
+shell_SRCS_stm32f405 := apps/shell/shell.c apps/shell/shell_main.c apps/shell/shell_stm32f405.c

@@ -1,13 +1,16 @@
 /*
- * Console shell image: a command shell on the console (DUART channel B), as
- * CubeOS' boot monitor and Zephyr's or NuttX's shells give their users, to
- * poke every port of the board by hand (see apps/shell/README.md).
+ * Console shell image: a command shell on the console, as CubeOS' boot
+ * monitor and Zephyr's or NuttX's shells give their users, to poke every
+ * port of the board by hand (see apps/shell/README.md). The same sources
+ * run on the RoboCube (console on DUART channel B) and the STM32F405
+ * (USART1); the board's part (shell.h) adds its commands.
  *
  * Threads (priority: larger is more urgent):
- *   motor    26  the motor service (drivers/motor.c: encoders, speed control)
- *   i2c      ..  the I2C drivers' own service (drivers/i2c.c)
- *   shell    10  brings the board I/O up (boot report), then reads command
- *                lines and answers them
+ *   motor    26  the RoboCube's motor service (drivers/motor.c: encoders,
+ *                speed control)
+ *   i2c      ..  the RoboCube's I2C drivers' own service (drivers/i2c.c)
+ *   shell    10  brings the board's part up (the RoboCube's I/O boot
+ *                report), then reads command lines and answers them
  *   idle      0
  *
  * The prompt "shell> " is printed when the shell is ready for the next line,
@@ -18,11 +21,8 @@
 #include "kernel.h"
 #include "drivers/board.h"
 #include "shell.h"
-#include "drivers/board_io.h"
 #include "drivers/console_in.h"
 #include "drivers/drv_err.h"
-#include "drivers/motor.h"
-#include "drivers/tpu.h"
 
 #define SHELL_PRIO 10u
 /* How long one wait for a line lasts; the loop then simply waits again
@@ -37,15 +37,13 @@ static void *shell_main(void *arg)
     static char line[SHELL_LINE_MAX + 1u];
     int rc;
     (void)arg;
-    rc = board_io_init(); /* prints which I2C devices answered on which bus */
-    if (rc < 0)
-        k_printf("shell: board I/O: %s (%d); the other ports still work\n", drv_strerror(rc), rc);
+    shell_board_bring_up();
     rc = console_in_init();
     if (rc < 0) {
         k_printf("shell: console input: %s (%d)\n", drv_strerror(rc), rc);
         return NULL;
     }
-    k_printf("RoboCube shell: 'help' lists the commands\n");
+    k_printf("%s shell: 'help' lists the commands\n", board_name);
     for (;;) {
         k_printf("shell> ");
         do {
@@ -63,10 +61,7 @@ static void *shell_main(void *arg)
 int main(void)
 {
     board_start("shell");
-    if (tpu_init() < 0)
-        board_halt("shell", "tpu_init failed\n");
-    if (motor_init() < 0)
-        board_halt("shell", "motor_init failed\n");
+    shell_board_setup();
     if (board_spawn(&shell_thread, "shell", shell_main, NULL, shell_stack, sizeof shell_stack,
                     SHELL_PRIO) != K_OK)
         board_halt("shell", "no shell thread\n");

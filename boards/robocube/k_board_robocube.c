@@ -4,15 +4,12 @@
  * drivers of this folder and registers the console writers with the kernel
  * (k_console_register), so the kernel itself calls no driver and no board.
  *
- * Console output: threads put bytes into a ring; the DUART's TxRDYB
- * interrupt (level 5, vectored through IVR) moves them to the transmitter
- * and masks itself when the ring runs dry. A thread that finds the ring
- * full waits on a semaphore the interrupt posts; a handler (or code before
- * k_start) cannot wait, so its surplus is dropped and counted. LF goes out
- * as CR LF, as with the firmware's polled console. Fault reports use
- * k_console_write_sync, whose writer here drains the ring and sends by
- * polling, with interrupts masked, so they get out even when the system is
- * wedged. Until the ring is set up, the polled writer serves both.
+ * Console output: the kernel's shared transmitter (k_console_tx.h) on
+ * channel B, whose TxRDYB interrupt (level 5, vectored through IVR) feeds it
+ * and is masked when all is sent. Fault reports use k_console_write_sync,
+ * whose writer here drains the ring and sends by polling, with interrupts
+ * masked, so they get out even when the system is wedged. Until the ring is
+ * set up, the polled writer serves both.
  *
  * The DUART's other users (radio, binary inputs, motor direction bits)
  * share its interrupt, its write-only IMR and ACR, and its output port
@@ -20,6 +17,7 @@
  */
 #include "kernel.h"
 #include "k_board.h"
+#include "k_console_tx.h"
 #include "kernel/arch/cpu32/cpu.h"
 #include "boards/robocube/mc68332.h"
 #include "boards/robocube/mc68681.h"
@@ -33,8 +31,7 @@
 void (*volatile k_board_tick_callback)(void);
 
 static uint8_t k_console_buf[K_BOARD_CONSOLE_RING];
-static struct k_ring k_console_ring;
-static struct k_sem k_console_space;
+static struct k_console_tx k_console;
 static uint8_t k_duart_imr;      /* IMR is write-only: its shadow */
 static uint8_t k_duart_opr;      /* so is OPR */
 static uint8_t k_duart_acr;      /* and ACR */
@@ -45,8 +42,6 @@ struct k_duart_handler {
     void *arg;
 };
 static struct k_duart_handler k_duart_handlers[DUART_MAX_HANDLERS];
-static int k_console_lf_held;    /* CR sent, LF still to send */
-static uint32_t k_console_drops;
 
 static void k_duart_set_imr(uint8_t imr)
 {
@@ -54,26 +49,21 @@ static void k_duart_set_imr(uint8_t imr)
     DUART_REG(DUART_IMR) = imr;
 }
 
-/* Feeds the transmitter while it is ready and there is something to send.
- * Interrupts masked (handler or caller). Returns whether the ring is empty. */
-static int k_console_feed(void)
+/* Channel B's transmitter, for the shared console transmitter. */
+static int duart_tx_ready(void)
 {
-    while ((DUART_REG(DUART_SRB) & DUART_SR_TXRDY) != 0u) {
-        uint8_t b;
-        if (k_console_lf_held) {
-            k_console_lf_held = 0;
-            DUART_REG(DUART_TBB) = '\n';
-            continue;
-        }
-        if (!k_ring_get(&k_console_ring, &b))
-            return 1;
-        if (b == '\n') {
-            k_console_lf_held = 1;
-            b = '\r';
-        }
-        DUART_REG(DUART_TBB) = b;
-    }
-    return 0;
+    return (DUART_REG(DUART_SRB) & DUART_SR_TXRDY) != 0u;
+}
+
+static void duart_tx_put(uint8_t b)
+{
+    DUART_REG(DUART_TBB) = b;
+}
+
+static void duart_tx_start(void)
+{
+    if ((k_duart_imr & DUART_IMR_TXRDYB) == 0u)
+        k_duart_set_imr((uint8_t)(k_duart_imr | DUART_IMR_TXRDYB));
 }
 
 static void k_duart_isr(void *arg)
@@ -81,12 +71,8 @@ static void k_duart_isr(void *arg)
     uint8_t pending = (uint8_t)(DUART_REG(DUART_ISR) & k_duart_imr);
     unsigned i;
     (void)arg;
-    if ((pending & DUART_ISR_TXRDYB) != 0u) {
-        if (k_console_feed() && !k_console_lf_held)
-            k_duart_set_imr((uint8_t)(k_duart_imr & ~DUART_IMR_TXRDYB));
-        if (k_sem_has_waiter(&k_console_space))
-            (void)k_sem_post(&k_console_space);
-    }
+    if ((pending & DUART_ISR_TXRDYB) != 0u && k_console_tx_isr(&k_console))
+        k_duart_set_imr((uint8_t)(k_duart_imr & ~DUART_IMR_TXRDYB));
     for (i = 0; i < DUART_MAX_HANDLERS; i++) {
         const struct k_duart_handler *h = &k_duart_handlers[i];
         if (h->fn != NULL && (pending & h->mask) != 0u)
@@ -181,39 +167,20 @@ int duart_ct_baud_clock(uint16_t preload)
 
 static size_t k_board_console_write(const char *s, size_t len)
 {
-    size_t done = 0;
-    int can_wait = k_can_block();
-    while (done < len) {
-        uint32_t irq = k_arch_irq_save();
-        int put = k_ring_put(&k_console_ring, (uint8_t)s[done]);
-        if ((k_duart_imr & DUART_IMR_TXRDYB) == 0u)
-            k_duart_set_imr((uint8_t)(k_duart_imr | DUART_IMR_TXRDYB));
-        k_arch_irq_restore(irq);
-        if (put) {
-            done++;
-        } else if (can_wait && irq == 0u) {
-            (void)k_sem_wait(&k_console_space);
-        } else {
-            k_console_drops += (uint32_t)(len - done);
-            break;
-        }
-    }
-    return done;
+    return k_console_tx_write(&k_console, s, len);
 }
 
 static void k_board_console_write_sync(const char *s, size_t len)
 {
     uint32_t irq = k_arch_irq_save();
-    while (!k_console_feed() || k_console_lf_held) {
-        /* drain what was queued first, so the report comes out in order */
-    }
+    k_console_tx_drain(&k_console); /* what was queued first, so the report comes out in order */
     console_write(s, len);
     k_arch_irq_restore(irq);
 }
 
 uint32_t k_board_console_dropped(void)
 {
-    return k_console_drops;
+    return k_console.drops;
 }
 
 /* PIT hook: runs inside the kernel's interrupt entry (k_board_pit_isr). */
@@ -240,10 +207,8 @@ int k_board_init(void)
 {
     console_init(); /* channel B at CONSOLE_BAUD 8N1, all DUART interrupts masked */
     k_console_register(NULL, console_write); /* the polled early writer */
-    (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
-    (void)k_sem_init(&k_console_space, 0, 1);
-    k_console_lf_held = 0;
-    k_console_drops = 0;
+    (void)k_console_tx_init(&k_console, k_console_buf, sizeof k_console_buf, duart_tx_ready,
+                            duart_tx_put, duart_tx_start);
     k_duart_imr = 0;
     k_duart_opr = 0;       /* OPR resets to 0: every OPn negated (motors brake) */
     k_duart_acr = console_acr();

@@ -1,8 +1,10 @@
 /*
  * The shared start-up of the firmware images (drivers/board.h) and the
  * status LED (drivers/led.h) on the STM32F405: the same interface the
- * RoboCube's drivers/board.c and drivers/led.c give, so an image that uses
- * only the kernel, the console and the LED builds for either board.
+ * RoboCube's drivers/board.c and drivers/led.c give (drivers/board_common.c
+ * has what both share), so an image that uses only the kernel, the console
+ * (output and line input, drivers/console_in.h) and the LED builds for
+ * either board.
  */
 #include "drivers/board.h"
 #include "drivers/led.h"
@@ -10,7 +12,7 @@
 #include "k_board.h"
 #include "armv7m.h"
 #include "stm32f405.h"
-#include "kernel/lib/kstring.h"
+#include "boards/stm32f405/board_stm32f405.h"
 
 const char board_name[] = "STM32F405";
 const char board_cpu_name[] = "Cortex-M4 (STM32F405)";
@@ -45,13 +47,6 @@ bool led_is_on(void)
     return led_on;
 }
 
-static void board_say(const char *image, const char *why)
-{
-    k_console_write_sync(image, strlen(image));
-    k_console_write_sync(": ", 2u);
-    k_console_write_sync(why, strlen(why));
-}
-
 void board_halt(const char *image, const char *why)
 {
     board_say(image, why);
@@ -64,10 +59,13 @@ void board_halt(const char *image, const char *why)
  * comes after the message, and the fault handler halts. */
 void board_power_off(const char *image, const char *why)
 {
-    register uint32_t op __asm__("r0") = 0x18u;
-    register uint32_t arg __asm__("r1") = 0x20026u;
     board_say(image, why);
-    __asm__ __volatile__("bkpt 0xab" : : "r"(op), "r"(arg) : "memory");
+    {
+        /* set after the call above, which is free to use r0 and r1 */
+        register uint32_t op __asm__("r0") = 0x18u;       /* SYS_EXIT */
+        register uint32_t arg __asm__("r1") = 0x20026u;   /* ADP_Stopped_ApplicationExit */
+        __asm__ __volatile__("bkpt 0xab" : : "r"(op), "r"(arg) : "memory");
+    }
     armv7m_halt();
 }
 
@@ -79,13 +77,14 @@ void board_start(const char *image)
         board_halt(image, "k_board_init failed: no console interrupt or no SysTick rate for K_TICK_HZ\n");
 }
 
-int board_spawn(struct k_thread *t, const char *name, k_thread_fn entry, void *arg,
-                uint32_t *stack, size_t stack_bytes, unsigned prio)
+int board_console_rx_start(board_console_rx_sink sink)
 {
-    int rc = k_thread_create(t, name, entry, arg, stack, stack_bytes, prio);
-    if (rc != K_OK)
-        k_printf("cannot create thread '%s': error %d\n", name, rc);
-    return rc;
+    return sink == NULL ? -1 : stm32f405_console_rx_attach(sink);
+}
+
+void board_console_rx_resume(void)
+{
+    stm32f405_console_rx_resume();
 }
 
 /* picolibc's stdio (printf, puts) writes through the kernel console, as

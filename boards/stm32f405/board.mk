@@ -37,20 +37,28 @@ STM32_ICOUNT  := shift=3,sleep=off
 STM32_QEMU_ARGS := -M $(STM32_MACHINE) -display none -monitor none -serial stdio \
                    -semihosting-config enable=on,target=native
 
+# The drivers that need nothing of the RoboCube: the board interface's shared
+# part, console line input and the command parser (an image links only what
+# it calls: --gc-sections).
+STM32_DRIVER_SRCS := drivers/board_common.c drivers/console_in.c drivers/line_edit.c \
+                     drivers/cmd.c drivers/drv_err.c
 # The port, the board, the kernel and the libraries every image links,
 # compiled per image at its tick rate.
 STM32_BASE_SRCS := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c \
                    kernel/arch/armv7m/k_arch_armv7m.c kernel/arch/armv7m/switch.S \
                    boards/stm32f405/vectors.c boards/stm32f405/k_board_stm32f405.c \
                    boards/stm32f405/board.c kernel/lib/kprintf.c kernel/lib/kstring.c \
-                   bsched/bsched.c $(K_CORE_SRCS)
+                   bsched/bsched.c $(K_CORE_SRCS) $(STM32_DRIVER_SRCS)
 
 # Headers that name RoboCube hardware: an image including one needs that board.
-STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h,$(wildcard drivers/*.h)) \
+STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h $(STM32_DRIVER_SRCS:.c=.h),$(wildcard drivers/*.h)) \
                        $(wildcard boards/robocube/*.h) mc68332.h cpu.h
+# An image's sources on this board: NAME_SRCS_stm32f405 where its app.mk gives
+# them (an image with a part per board), else NAME_SRCS.
+stm32_srcs = $(or $($(1)_SRCS_stm32f405),$($(1)_SRCS))
 # $(call stm32_needs,NAME): the RoboCube headers app NAME's sources include.
 stm32_hash  := \#
-stm32_includes = $(shell grep -lF '$(stm32_hash)include "$(2)' $($(1)_SRCS) /dev/null 2>/dev/null)
+stm32_includes = $(shell grep -lF '$(stm32_hash)include "$(2)' $(call stm32_srcs,$(1)) /dev/null 2>/dev/null)
 stm32_needs = $(strip $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(call stm32_includes,$(1),$(h)"),$(h)))) \
                   $(if $(call stm32_includes,$(1),net/),net/ (the radio on the DUART)) \
                   $(if $($(1)_RUNNER),its runner (the RoboCube world co-simulation)))
@@ -86,7 +94,7 @@ $(2): $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BA
 endef
 # Firmware images: every app, with its tick rate and start-up (NAME_BOOT).
 define stm32_app_template
-$$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$($(1)_SRCS) \
+$$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$(call stm32_srcs,$(1)) \
     $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) \
     $$(if $$(call stm32_includes,$(1),pdl/),$$(STM32_PDL_SRCS)),\
     -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' -DPDL_PORTS_EXTERNAL $$($(1)_CFLAGS)))
@@ -119,12 +127,14 @@ endif
 endif
 endif
 
+# Piped input waits for the board's first output (robocube_emu.console_gate):
+# QEMU's USART model drops what it is given before the firmware enables it.
 run-stm32f405:
-	@$(SETUP) arm
+	@$(SETUP) base arm
 	@$(MAKE) --no-print-directory firmware-stm32f405 BOARD=stm32f405 APP=$(APP)
 	@echo "make run: booting $(call stm32_elf,$(APP)) on $(QEMU_ARM) -M $(STM32_MACHINE) (console = USART1 on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s)$(if $($(APP)_QUIT),; $($(APP)_QUIT)); quit with Ctrl-C)" >&2
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
-	    $(QEMU_ARM) $(STM32_QEMU_ARGS) -icount $(STM32_ICOUNT) -kernel $(call stm32_elf,$(APP)); rc=$$?; \
+	    $$([ -t 0 ] || echo $(PYTHON) -m robocube_emu.console_gate) $(QEMU_ARM) $(STM32_QEMU_ARGS) -icount $(STM32_ICOUNT) -kernel $(call stm32_elf,$(APP)); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
 
 # The kernel target suite (kernel/tests/target-kernel) on this board: the same
@@ -145,13 +155,15 @@ $(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/
     $(STM32_BUILD)/tests/fault-$(k).elf,boards/stm32f405/tests/fault_image.c,\
     -DFAULT_KIND=$(call stm32_fault_index,$(k)),$(STM32_TEST_BASE))))
 
-# The firmware on this board: table1 via make run, the fault reports, PDL (its
-# ports, pdl_hello, pdl_bench), make run's refusals (boards/stm32f405/tests).
+# The firmware on this board: table1 and the shell via make run, the fault
+# reports, PDL (its ports, pdl_hello, pdl_bench), make run's refusals
+# (boards/stm32f405/tests).
 CHECKS += stm32f405-firmware
 .PHONY: check-stm32f405-firmware
 check-stm32f405-firmware:
 	@$(SETUP) base arm
 	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(call stm32_elf,pdl_hello) $(call stm32_elf,pdl_bench) \
+	    $(call stm32_elf,shell) \
 	    $(STM32_FAULT_ELFS) $(STM32_PDL_TEST_ELF)
 	@STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
 	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests

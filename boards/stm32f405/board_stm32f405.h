@@ -4,11 +4,16 @@
 
 #include <stdint.h>
 
-/* Calls fn(byte) in the console's interrupt for every received byte
- * (NULL: reception off). */
-void stm32f405_console_rx_attach(void (*fn)(uint8_t byte));
+#include "drivers/board.h"
 
-
+/* The console's receiver on USART1, the board's side of
+ * board_console_rx_start (drivers/board.h): calls fn(byte, flags) in the
+ * console's interrupt for every received byte; when fn returns 0, reception
+ * pauses (the next byte waits in the USART) until
+ * stm32f405_console_rx_resume. NULL: reception off. Returns 0, or -1 when
+ * another receiver is attached. */
+int stm32f405_console_rx_attach(board_console_rx_sink fn);
+void stm32f405_console_rx_resume(void);
 
 /* The simulated part of the PDL ports (pdl/stm32f405/pdl_ports_stm32f405.c). */
 struct stm32f405_sim_io {

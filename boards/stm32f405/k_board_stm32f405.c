@@ -3,37 +3,40 @@
  * the console on USART1 and the tick on SysTick. The one file that glues the
  * board's console and tick to the kernel.
  *
- * Console output: threads put bytes into a ring; the USART's TXE interrupt
- * (kernel level 5, NVIC line 37) moves them to the transmitter and disables
- * itself when the ring runs dry (see k_console_tx_start for what QEMU's
- * model lacks there). A thread that finds the ring full waits on
- * a semaphore the interrupt posts; a handler (or code before k_start) cannot
- * wait, so its surplus is dropped and counted. LF goes out as CR LF.
- * The polled writer drains the ring and sends by polling, with interrupts
- * masked, for fault reports; it is the console until k_board_init has set up
- * the interrupt-driven one (both registered with k_console_register).
+ * Console output: the kernel's shared transmitter (k_console_tx.h) on
+ * USART1, whose TXE interrupt (kernel level 5, NVIC line 37) feeds it and is
+ * disabled when all is sent (see usart_tx_start for what QEMU's model lacks
+ * there). The polled writer drains the ring and sends by polling, with
+ * interrupts masked, for fault reports; it is the console until
+ * k_board_init has set up the interrupt-driven one (both registered with
+ * k_console_register).
+ *
+ * Console input: the same interrupt hands each received byte to the
+ * receiver's sink (stm32f405_console_rx_attach); while the sink is full,
+ * RXNE's interrupt is off and the byte waits in the data register, which
+ * holds the next ones back (QEMU's model takes no byte from the host while
+ * it is occupied; a real chip overruns, and says so).
  *
  * The tick: SysTick from the 168 MHz core clock at K_TICK_HZ, kernel level 4
  * (below the console, as the PIT is below the DUART on the RoboCube).
  */
 #include "kernel.h"
 #include "k_board.h"
+#include "k_console_tx.h"
 #include "k_struct.h"
 #include "armv7m.h"
 #include "stm32f405.h"
 #include "kernel/lib/kprintf.h"
 #include "boards/stm32f405/board_stm32f405.h"
+#include "drivers/board.h"
 
 #define CONSOLE_LEVEL 5u
 
 void (*volatile k_board_tick_callback)(void);
 
 static uint8_t k_console_buf[K_BOARD_CONSOLE_RING];
-static struct k_ring k_console_ring;
-static struct k_sem k_console_space;
-static int k_console_lf_held;    /* CR sent, LF still to send */
-static uint32_t k_console_drops;
-static void (*volatile k_console_rx_fn)(uint8_t byte);
+static struct k_console_tx k_console;
+static volatile board_console_rx_sink k_console_rx_fn;
 
 /* Polled output, for kprintf and the fault reports. */
 static void console_putc_polled(char c)
@@ -45,33 +48,22 @@ static void console_putc_polled(char c)
     USART_DR(USART1_BASE) = (uint8_t)c;
 }
 
-/* Feeds the transmitter while it is empty and there is something to send.
- * Interrupts masked (handler or caller). Returns whether the ring is empty. */
-static int k_console_feed(void)
+/* USART1's transmitter, for the shared console transmitter. */
+static int usart_tx_ready(void)
 {
-    while ((USART_SR(USART1_BASE) & USART_SR_TXE) != 0u) {
-        uint8_t b;
-        if (k_console_lf_held) {
-            k_console_lf_held = 0;
-            USART_DR(USART1_BASE) = '\n';
-            continue;
-        }
-        if (!k_ring_get(&k_console_ring, &b))
-            return 1;
-        if (b == '\n') {
-            k_console_lf_held = 1;
-            b = '\r';
-        }
-        USART_DR(USART1_BASE) = b;
-    }
-    return 0;
+    return (USART_SR(USART1_BASE) & USART_SR_TXE) != 0u;
+}
+
+static void usart_tx_put(uint8_t b)
+{
+    USART_DR(USART1_BASE) = b;
 }
 
 /* Enables the TXE interrupt and also sets the line pending in the NVIC:
  * QEMU 7.2's USART model raises its interrupt for received bytes only, never
  * for TXE (its transmitter is always empty). On a real chip the pending bit
  * only brings the handler in a little early: it feeds while TXE is set. */
-static void k_console_tx_start(void)
+static void usart_tx_start(void)
 {
     USART_CR1(USART1_BASE) |= USART_CR1_TXEIE;
     NVIC_ISPR(USART1_IRQ / 32u) = 1u << (USART1_IRQ % 32u);
@@ -81,40 +73,23 @@ static void k_console_isr(void *arg)
 {
     uint32_t sr = USART_SR(USART1_BASE), cr1 = USART_CR1(USART1_BASE);
     (void)arg;
-    if ((sr & USART_SR_RXNE) != 0u) {
-        uint8_t b = (uint8_t)USART_DR(USART1_BASE);
-        void (*fn)(uint8_t) = k_console_rx_fn;
-        if (fn != NULL)
-            fn(b);
+    if ((cr1 & USART_CR1_RXNEIE) != 0u && (sr & USART_SR_RXNE) != 0u) {
+        /* reading DR after SR clears RXNE and the error flags */
+        unsigned flags = (sr & USART_SR_ORE) != 0u      ? BOARD_RX_OVERRUN
+                         : (sr & USART_SR_ERRORS) != 0u ? BOARD_RX_ERROR : 0u;
+        board_console_rx_sink fn = k_console_rx_fn;
+        if (fn == NULL || !fn((uint8_t)USART_DR(USART1_BASE), flags))
+            USART_CR1(USART1_BASE) &= ~USART_CR1_RXNEIE;
     }
-    if ((cr1 & USART_CR1_TXEIE) != 0u && (sr & USART_SR_TXE) != 0u) {
-        if (k_console_feed() && !k_console_lf_held)
-            USART_CR1(USART1_BASE) = cr1 & ~USART_CR1_TXEIE;
-        if (k_sem_has_waiter(&k_console_space))
-            (void)k_sem_post(&k_console_space);
-    }
+    if ((cr1 & USART_CR1_TXEIE) != 0u && (sr & USART_SR_TXE) != 0u &&
+        k_console_tx_isr(&k_console))
+        USART_CR1(USART1_BASE) &= ~USART_CR1_TXEIE;
 }
 
 /* The interrupt-driven writer the board registers (k_console_register). */
 static size_t stm32_console_write(const char *s, size_t len)
 {
-    size_t done = 0;
-    int can_wait = k_can_block();
-    while (done < len) {
-        uint32_t irq = k_arch_irq_save();
-        int put = k_ring_put(&k_console_ring, (uint8_t)s[done]);
-        k_console_tx_start();
-        k_arch_irq_restore(irq);
-        if (put) {
-            done++;
-        } else if (can_wait && irq == 0u) {
-            (void)k_sem_wait(&k_console_space);
-        } else {
-            k_console_drops += (uint32_t)(len - done);
-            break;
-        }
-    }
-    return done;
+    return k_console_tx_write(&k_console, s, len);
 }
 
 /* The polled writer: the early console, and fault reports in any context. */
@@ -122,9 +97,7 @@ static void stm32_console_write_sync(const char *s, size_t len)
 {
     uint32_t irq = k_arch_irq_save();
     size_t i;
-    while (!k_console_feed() || k_console_lf_held) {
-        /* drain what was queued first, so the report comes out in order */
-    }
+    k_console_tx_drain(&k_console); /* what was queued first, so the report comes out in order */
     for (i = 0; i < len; i++)
         console_putc_polled(s[i]);
     k_arch_irq_restore(irq);
@@ -132,14 +105,25 @@ static void stm32_console_write_sync(const char *s, size_t len)
 
 uint32_t k_board_console_dropped(void)
 {
-    return k_console_drops;
+    return k_console.drops;
 }
 
-void stm32f405_console_rx_attach(void (*fn)(uint8_t byte))
+int stm32f405_console_rx_attach(board_console_rx_sink fn)
 {
     uint32_t irq = k_arch_irq_save();
-    k_console_rx_fn = fn;
-    if (fn != NULL)
+    int rc = fn != NULL && k_console_rx_fn != NULL ? -1 : 0;
+    if (rc == 0) {
+        k_console_rx_fn = fn;
+        stm32f405_console_rx_resume();
+    }
+    k_arch_irq_restore(irq);
+    return rc;
+}
+
+void stm32f405_console_rx_resume(void)
+{
+    uint32_t irq = k_arch_irq_save();
+    if (k_console_rx_fn != NULL)
         USART_CR1(USART1_BASE) |= USART_CR1_RXNEIE;
     else
         USART_CR1(USART1_BASE) &= ~USART_CR1_RXNEIE;
@@ -163,10 +147,8 @@ int k_board_init(void)
     USART_CR1(USART1_BASE) = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE;
     kprintf_set_output(console_putc_polled);
     k_console_register(NULL, stm32_console_write_sync);
-    (void)k_ring_init(&k_console_ring, k_console_buf, sizeof k_console_buf);
-    (void)k_sem_init(&k_console_space, 0, 1);
-    k_console_lf_held = 0;
-    k_console_drops = 0;
+    (void)k_console_tx_init(&k_console, k_console_buf, sizeof k_console_buf, usart_tx_ready,
+                            usart_tx_put, usart_tx_start);
     k_console_rx_fn = NULL;
     if (k_irq_register(ARMV7M_IRQ_VECTOR(USART1_IRQ), CONSOLE_LEVEL, k_console_isr, NULL) != K_OK)
         return -1;

@@ -33,6 +33,8 @@
 #define USART_DR(b)  STM32_REG32((b) + 0x04u)
 #define USART_BRR(b) STM32_REG32((b) + 0x08u)
 #define USART_CR1(b) STM32_REG32((b) + 0x0Cu)
+#define USART_SR_ERRORS 0x07u     /* NE, FE, PE */
+#define USART_SR_ORE   (1u << 3)
 #define USART_SR_RXNE  (1u << 5)
 #define USART_SR_TXE   (1u << 7)
 #define USART_CR1_RE     (1u << 2)

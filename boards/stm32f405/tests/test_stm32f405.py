@@ -1,6 +1,7 @@
 """The firmware on the stm32f405 board (qemu-system-arm -M netduinoplus2):
-table1 through `make run`, the fault reports of the ARMv7-M port, and make
-run's refusals (an unknown board, an image that needs the RoboCube).
+table1 and the shell through `make run`, the fault reports of the ARMv7-M
+port, PDL on the board's ports, and make run's refusals (an unknown board, an
+image that needs the RoboCube).
 
 Environment (set by `make check-stm32f405-firmware`):
   STM32_BUILD    build/stm32f405 (images)
@@ -24,12 +25,12 @@ QEMU = os.environ.get("QEMU_ARM", "qemu-system-arm")
 ICOUNT = os.environ.get("STM32_ICOUNT", "shift=3,sleep=off")
 
 
-def make(*args, timeout=120):
+def make(*args, timeout=120, stdin=""):
     env = dict(os.environ)
     env.pop("MAKEFLAGS", None)
     env.pop("MAKELEVEL", None)
     return subprocess.run(["make", "--no-print-directory", *args], cwd=ROOT, env=env,
-                          capture_output=True, text=True, timeout=timeout)
+                          input=stdin, capture_output=True, text=True, timeout=timeout)
 
 
 def boot(elf):
@@ -111,6 +112,73 @@ def test_fault_report_names_the_instruction(kind):
         assert "R0=5a000000" in text                  # the stacked R0: the address loaded
     if kind == "thread":
         assert "in thread 'faulter'" in text
+
+
+SHELL_PROMPT = "shell> "
+
+
+def shell_session(lines, seconds=30):
+    """`printf LINES | make run BOARD=stm32f405 APP=shell RUN_SECONDS=seconds`:
+    (make's status, {command: its answer lines}, the whole console text)."""
+    r = make("run", "BOARD=stm32f405", "APP=shell", f"RUN_SECONDS={seconds}",
+             stdin="".join(line + "\n" for line in lines), timeout=seconds + 60)
+    text = r.stdout.replace("\r\n", "\n")
+    answers = []
+    for chunk in text.split(SHELL_PROMPT)[1:]:
+        echo, _, rest = chunk.partition("\n")
+        answers.append((echo, [a for a in rest.split("\n") if a]))
+    return r, answers, text
+
+
+def test_shell_runs_its_common_commands():
+    """The shell on this board: the commands that need no RoboCube I/O board
+    (help, led, ps, uptime, sleep, console, exit); the I/O board's are unknown
+    here; exit switches the board off, which ends make run with status 0."""
+    r, answers, text = shell_session(["help", "led on", "led", "led off", "ad 5", "uptime",
+                                      "sleep 500", "uptime", "ps", "x" * 81, "led blink",
+                                      "console", "exit"])
+    assert r.returncode == 0, (r.stderr, text)
+    assert "STM32F405 shell: 'help' lists the commands" in text
+    said = dict(answers)
+    # the echo of the over-long line stops at the 80 characters a line may have
+    assert [echo for echo, _ in answers] == ["help", "led on", "led", "led off", "ad 5", "uptime",
+                                             "sleep 500", "uptime", "ps", "x" * 80, "led blink",
+                                             "console", "exit"], text
+    assert [a.split()[0] for a in said["help"]] == ["help", "led", "ps", "uptime", "sleep",
+                                                    "console", "exit"]
+    assert said["led on"] == ["led = on"] and said["led"] == ["led = on"]
+    assert said["led off"] == ["led = off"]
+    assert said["ad 5"] == ["error: unknown command 'ad' (try help)"]
+    uptimes = [int(m.group(1)) for _, a in answers if a and (m := re.match(
+        r"uptime \d+\.\d{3} s \((\d+) ticks at 1024 Hz\)$", a[0]))]
+    assert len(uptimes) == 2 and uptimes[1] - uptimes[0] >= 512, answers   # slept 500 ms
+    assert said["sleep 500"] == ["slept 500 ms"]
+    ps = said["ps"]
+    assert ps[0].split() == ["thread", "prio", "state", "stack", "used", "switches"]
+    assert re.match(r"shell +10 run +\d+/4096 +\d+$", ps[1]) and ps[2].startswith("idle ")
+    assert re.match(r"interrupt stack \d+/\d+$", ps[-1])
+    assert said["x" * 80] == ["error: line too long (more than 80 characters), ignored"]
+    assert said["led blink"] == ["error: led: 'blink': say on or off"]
+    m = re.match(r"console: (\d+) bytes, (\d+) lines, 1 too long, ring full 0 times, "
+                 r"0 overruns, 0 errors$", said["console"][0])
+    assert m and int(m.group(2)) == 11, said["console"]
+    assert said["exit"] == ["shell: exit: board off"]
+
+
+def test_shell_burst_larger_than_the_ring_loses_nothing():
+    """Far more than the 256-byte receive ring at once: the USART's receive
+    interrupt pauses while the ring is full (the byte waits in the chip) and
+    resumes as the shell drains it, so every line is answered, in order."""
+    # the shell sleeps first, so the burst piles up in the ring
+    lines = ["sleep 2000"] + [f"led {'on' if i % 2 else 'off'}" for i in range(80)] + ["console", "exit"]
+    r, answers, text = shell_session(lines)
+    assert r.returncode == 0, (r.stderr, text)
+    assert [echo for echo, _ in answers] == lines, text
+    for i, (_echo, answer) in enumerate(answers[1:81]):
+        assert answer == [f"led = {'on' if i % 2 else 'off'}"], (i, answer)
+    m = re.match(r"console: (\d+) bytes, 82 lines, 0 too long, ring full (\d+) times, "
+                 r"0 overruns, 0 errors$", answers[81][1][0])
+    assert m and int(m.group(2)) >= 1, answers[81]
 
 
 def test_make_run_refuses_an_unknown_board():

@@ -1,19 +1,19 @@
 /*
- * Commands of the console shell. The port commands (ad, da, bio, bin,
- * fast, pwm, motor, enc, led) name their channel the way the uniform access
- * layer does ("ad 5" is SAI channel "analog in 5"), so the channel checks,
- * ranges and error codes are SAI's (drivers/sai.h); the shell adds the
- * extras SAI has no room for (a PWM frequency, an encoder's speed).
+ * The RoboCube's part of the console shell: the commands of its I/O board.
+ * The port commands (ad, da, bio, bin, fast, pwm, motor, enc) name their
+ * channel the way the uniform access layer does ("ad 5" is SAI channel
+ * "analog in 5"), so the channel checks, ranges and error codes are SAI's
+ * (drivers/sai.h); the shell adds the extras SAI has no room for (a PWM
+ * frequency, an encoder's speed). Also the I2C scan and the radio.
  */
 #include "shell.h"
 
-#include <stdarg.h>
 #include <stdint.h>
 
 #include "kernel.h"
 #include "drivers/board.h"
+#include "drivers/board_io.h"
 #include "drivers/cmd.h"
-#include "drivers/console_in.h"
 #include "drivers/drv_err.h"
 #include "drivers/i2c.h"
 #include "drivers/motor.h"
@@ -22,16 +22,7 @@
 #include "net/net.h"
 #include "net/auth.h"
 
-static void reply_error(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
-static void reply_error(const char *fmt, ...)
-{
-    char text[SHELL_LINE_MAX + 64u];
-    va_list ap;
-    va_start(ap, fmt);
-    (void)k_vsnprintf(text, sizeof text, fmt, ap);
-    va_end(ap);
-    k_printf("error: %s\n", text);
-}
+#define reply_error shell_reply_error
 
 /* The channel named by the command's first two words ("ad 5"), parsed by SAI
  * from the line; reports the error itself and returns < 0 when there is none. */
@@ -100,37 +91,6 @@ static void cmd_port(int argc, char **argv, const char *line)
         return;
     }
     print_channel(ch, value);
-}
-
-static void cmd_led(int argc, char **argv, const char *line)
-{
-    struct sai_channel ch;
-    int32_t value;
-    int rc;
-    (void)line;
-    if (sai_parse("led", &ch) < 0)
-        return;
-    if (argc == 2) {
-        if (cmd_same(argv[1], "on"))
-            value = 1;
-        else if (cmd_same(argv[1], "off"))
-            value = 0;
-        else {
-            reply_error("led: '%s': say on or off", argv[1]);
-            return;
-        }
-        rc = sai_write(ch, value);
-        if (rc < 0) {
-            report_driver_error("led", rc);
-            return;
-        }
-    }
-    rc = sai_read(ch, &value);
-    if (rc < 0) {
-        report_driver_error("led", rc);
-        return;
-    }
-    k_printf("led = %s\n", value != 0 ? "on" : "off");
 }
 
 /* pwm CH PERMILLE [HZ] */
@@ -225,21 +185,6 @@ static void cmd_speed(int argc, char **argv, const char *line)
     k_printf("speed %u = %ld counts/s\n", ch.index, (long)cps);
 }
 
-/* sleep MS: waits, so that a script piped into the shell can let time pass. */
-#define SHELL_SLEEP_MAX_MS 60000
-static void cmd_sleep(int argc, char **argv, const char *line)
-{
-    int32_t ms;
-    (void)argc;
-    (void)line;
-    if (!cmd_parse_int(argv[1], &ms) || ms < 0 || ms > SHELL_SLEEP_MAX_MS) {
-        reply_error("sleep: '%s': milliseconds 0..%d", argv[1], SHELL_SLEEP_MAX_MS);
-        return;
-    }
-    (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)ms));
-    k_printf("slept %ld ms\n", (long)ms);
-}
-
 /* enc N: position and speed. */
 static void cmd_enc(int argc, char **argv, const char *line)
 {
@@ -258,53 +203,6 @@ static void cmd_enc(int argc, char **argv, const char *line)
         return;
     }
     k_printf("enc %u = %ld counts, %ld counts/s\n", ch.index, (long)position, (long)speed);
-}
-
-/* ---- system commands ---- */
-
-static const char *state_name(const struct k_thread_info *t)
-{
-    if (t->is_current)
-        return "run";
-    switch (t->state) {
-    case K_THREAD_READY:   return "ready";
-    case K_THREAD_BLOCKED: return "blocked";
-    case K_THREAD_DEAD:    return "dead";
-    default:               return "?";
-    }
-}
-
-#define SHELL_PS_MAX 16u
-static void cmd_ps(int argc, char **argv, const char *line)
-{
-    static struct k_thread_info threads[SHELL_PS_MAX]; /* static: keep the shell's stack small */
-    int n = k_thread_list(threads, SHELL_PS_MAX), i;
-    uint32_t irq_size, irq_used;
-    (void)argc;
-    (void)argv;
-    (void)line;
-    k_printf("%-14s %4s %-8s %13s %8s\n", "thread", "prio", "state", "stack used", "switches");
-    for (i = 0; i < n && i < (int)SHELL_PS_MAX; i++) {
-        const struct k_thread_info *t = &threads[i];
-        /* a thread whose guard words broke (stopped by the kernel) is marked */
-        k_printf("%-14s %4u %-8s %6lu/%-6lu %8lu%s\n", t->name, t->prio, state_name(t),
-                 (unsigned long)t->stack_used, (unsigned long)t->stack_bytes,
-                 (unsigned long)t->switches_in, t->stack_intact ? "" : " STACK OVERFLOW");
-    }
-    if (n > (int)SHELL_PS_MAX)
-        k_printf("(%d more threads not shown)\n", n - (int)SHELL_PS_MAX);
-    if (k_irq_stack_usage(&irq_size, &irq_used) == K_OK)
-        k_printf("interrupt stack %lu/%lu\n", (unsigned long)irq_used, (unsigned long)irq_size);
-}
-
-static void cmd_uptime(int argc, char **argv, const char *line)
-{
-    uint32_t ms = k_uptime_ms();
-    (void)argc;
-    (void)argv;
-    (void)line;
-    k_printf("uptime %lu.%03lu s (%lu ticks at %u Hz)\n", (unsigned long)(ms / 1000u),
-             (unsigned long)(ms % 1000u), (unsigned long)k_ticks(), (unsigned)K_TICK_HZ);
 }
 
 static void cmd_i2c(int argc, char **argv, const char *line)
@@ -328,19 +226,6 @@ static void cmd_i2c(int argc, char **argv, const char *line)
             k_printf(" 0x%02x", found[i]);
         k_printf("\n");
     }
-}
-
-static void cmd_console(int argc, char **argv, const char *line)
-{
-    struct console_in_stats st;
-    (void)argc;
-    (void)argv;
-    (void)line;
-    console_in_stats(&st);
-    k_printf("console: %lu bytes, %lu lines, %lu too long, ring full %lu times, "
-             "%lu overruns, %lu errors\n",
-             (unsigned long)st.bytes, (unsigned long)st.lines, (unsigned long)st.too_long,
-             (unsigned long)st.ring_full, (unsigned long)st.overruns, (unsigned long)st.errors);
 }
 
 /* net: the radio stack's statistics; net start N: join the radio as station N. */
@@ -392,25 +277,7 @@ static void cmd_net(int argc, char **argv, const char *line)
     k_printf("net: station %u started\n", (unsigned)net_station());
 }
 
-/* exit: every motor to 0 first (open loop, which also ends a speed
- * set-point), so the robot stands still whatever happens to the board, then
- * the board switches itself off (board_power_off: LPSTOP with the interrupt
- * mask at 7), which ends the emulated run: make run returns. */
-static void cmd_exit(int argc, char **argv, const char *line)
-{
-    unsigned m;
-    (void)argc;
-    (void)argv;
-    (void)line;
-    for (m = 0; m < MOTOR_COUNT; m++)
-        (void)motor_set(m, 0);
-    board_power_off("shell", "exit: motors stopped, board off\n");
-}
-
-static void cmd_help(int argc, char **argv, const char *line);
-
-static const struct cmd commands[] = {
-    {"help", "", "this list", 0, 0, cmd_help},
+static const struct cmd robocube_commands[] = {
     {"ad", "N", "read analog input N (0..23)", 1, 1, cmd_port},
     {"da", "N V", "set analog output N (0..5) to V (0..255)", 2, 2, cmd_port},
     {"bio", "N [V]", "binary I/O line N (0..15): read, or latch V (1 = input)", 1, 2, cmd_port},
@@ -420,67 +287,39 @@ static const struct cmd commands[] = {
     {"motor", "N SPEED", "motor N (0..2) power, signed per-mille (-1000..1000)", 2, 2, cmd_motor},
     {"speed", "N CPS", "motor N closed loop: PI speed set-point in counts/s", 2, 2, cmd_speed},
     {"enc", "N", "motor N's encoder: position (counts), speed (counts/s)", 1, 1, cmd_enc},
-    {"led", "on|off", "switch the LED (no argument: show it)", 0, 1, cmd_led},
-    {"ps", "", "threads: priority, state, stack used/size, switches", 0, 0, cmd_ps},
-    {"uptime", "", "time since boot", 0, 0, cmd_uptime},
-    {"sleep", "MS", "wait MS milliseconds (0..60000), for scripts", 1, 1, cmd_sleep},
     {"i2c", "scan", "list the devices that answer on both I2C buses", 1, 1, cmd_i2c},
-    {"console", "", "console input counters (bytes, lines, pauses, losses)", 0, 0, cmd_console},
     {"net", "[start STATION]", "radio statistics; net start N (0..15) joins the radio", 0, 2, cmd_net},
-    {"exit", "", "stop the motors and switch the board off (ends make run)", 0, 0, cmd_exit},
 };
-#define COMMAND_COUNT (sizeof commands / sizeof commands[0])
 
-static void cmd_help(int argc, char **argv, const char *line)
+size_t shell_board_commands(const struct cmd **table)
 {
-    unsigned i;
-    (void)argc;
-    (void)argv;
-    (void)line;
-    for (i = 0; i < COMMAND_COUNT; i++) {
-        char head[32];
-        (void)k_snprintf(head, sizeof head, "%s %s", commands[i].name, commands[i].usage);
-        k_printf("  %-22s %s\n", head, commands[i].what);
-    }
+    *table = robocube_commands;
+    return sizeof robocube_commands / sizeof robocube_commands[0];
 }
 
-static int is_blank(char c)
+/* The TPU and the motor service (its thread: encoders, speed control). */
+void shell_board_setup(void)
 {
-    return c == ' ' || c == '\t';
+    if (tpu_init() < 0)
+        board_halt("shell", "tpu_init failed\n");
+    if (motor_init() < 0)
+        board_halt("shell", "motor_init failed\n");
 }
 
-void shell_execute(char *line)
+/* The I2C devices, with the boot report of which answered on which bus. */
+void shell_board_bring_up(void)
 {
-    char original[SHELL_LINE_MAX + 1u];
-    char *argv[SHELL_MAX_ARGS + 1u];
-    const struct cmd *c;
-    int argc;
-    unsigned i;
-    char *p = line;
-    /* the line as typed (blanks trimmed) is kept for SAI; the words are split in place */
-    while (is_blank(*p))
-        p++;
-    for (i = 0; p[i] != '\0' && i < SHELL_LINE_MAX; i++)
-        original[i] = p[i];
-    while (i > 0u && is_blank(original[i - 1u]))
-        i--;
-    original[i] = '\0';
-    argc = cmd_split(p, argv, (int)SHELL_MAX_ARGS + 1);
-    if (argc < 0) {
-        reply_error("too many arguments");
-        return;
-    }
-    if (argc == 0)
-        return;
-    switch (cmd_find(commands, COMMAND_COUNT, argc, argv, &c)) {
-    case CMD_FOUND:
-        c->run(argc, argv, original);
-        break;
-    case CMD_USAGE:
-        reply_error("usage: %s %s", c->name, c->usage);
-        break;
-    default:
-        reply_error("unknown command '%s' (try help)", argv[0]);
-        break;
-    }
+    int rc = board_io_init();
+    if (rc < 0)
+        k_printf("shell: board I/O: %s (%d); the other ports still work\n", drv_strerror(rc), rc);
+}
+
+/* exit: every motor to 0 first (open loop, which also ends a speed
+ * set-point), so the robot stands still whatever happens to the board. */
+const char *shell_board_stop(void)
+{
+    unsigned m;
+    for (m = 0; m < MOTOR_COUNT; m++)
+        (void)motor_set(m, 0);
+    return "exit: motors stopped, board off\n";
 }

@@ -1,0 +1,22 @@
+/* The part of the board interface (board.h) that is the same on every board:
+ * each board's own file (drivers/board.c for the RoboCube, boards/NAME/board.c
+ * for another) gives the rest. */
+#include "drivers/board.h"
+
+#include "kernel/lib/kstring.h"
+
+void board_say(const char *image, const char *why)
+{
+    k_console_write_sync(image, strlen(image));
+    k_console_write_sync(": ", 2u);
+    k_console_write_sync(why, strlen(why));
+}
+
+int board_spawn(struct k_thread *t, const char *name, k_thread_fn entry, void *arg,
+                uint32_t *stack, size_t stack_bytes, unsigned prio)
+{
+    int rc = k_thread_create(t, name, entry, arg, stack, stack_bytes, prio);
+    if (rc != K_OK)
+        k_printf("cannot create thread '%s': error %d\n", name, rc);
+    return rc;
+}
