@@ -28,6 +28,13 @@ struct k_kernel {
 };
 extern struct k_kernel k_kernel;
 
+/* For a port whose hardware catches a thread at its stack guard (the
+ * ARMv7-M MPU): called in thread mode, on a fresh part of the running
+ * thread's stack, it stops that thread as if its guard words had broken
+ * (reported, K_ESTACK for its joiners) and switches away; never returns.
+ * The idle thread, or a fault before k_start, halts the system instead. */
+void k_stack_overflow_stop_current(void) __attribute__((noreturn));
+
 void k_waitq_init(struct k_waitq *wq);
 struct k_thread *k_waitq_first(const struct k_waitq *wq);
 /* Blocks the current thread on wq (may be NULL: plain sleep) until woken or

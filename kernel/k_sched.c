@@ -146,6 +146,20 @@ static void k_stop_overflowed(struct k_thread *t)
     k_wake_joiners(t);
 }
 
+void k_stack_overflow_stop_current(void)
+{
+    struct k_thread *t = k_kernel.current;
+    (void)k_arch_irq_save();
+    if (!k_kernel.started || t == &k_kernel.idle) {
+        k_report("stack overflow (the system cannot go on without it: halted)", t);
+        k_arch_halt();
+    }
+    k_stop_overflowed(t);
+    k_resched();
+    for (;;) /* not reached: nothing switches back to a dead thread */
+        k_arch_idle();
+}
+
 /* ---- switching ---- */
 
 void k_resched(void)
@@ -393,6 +407,15 @@ int k_thread_create(struct k_thread *t, const char *name, k_thread_fn entry, voi
                 o->all_next = t->all_next;
                 break;
             }
+#if K_ARCH_STACK_ALIGN > 4u
+    {
+        /* The port guards a stack from its K_ARCH_STACK_ALIGN-aligned base
+         * up (an MPU region): a base below that boundary is moved up to it. */
+        size_t skip = (size_t)(-(uintptr_t)stack & (K_ARCH_STACK_ALIGN - 1u));
+        stack += skip / 4u;
+        stack_bytes -= skip;
+    }
+#endif
     k_thread_setup(t, name, entry, arg, stack, stack_bytes / 4u, (uint8_t)prio);
     k_resched();
     k_arch_irq_restore(s);

@@ -13,9 +13,10 @@
  *
  * Console input: the same interrupt hands each received byte to the
  * receiver's sink (stm32f405_console_rx_attach); while the sink is full,
- * RXNE's interrupt is off and the byte waits in the data register, which
- * holds the next ones back (QEMU's model takes no byte from the host while
- * it is occupied; a real chip overruns, and says so).
+ * RXNE's interrupt is off and the next byte waits in the data register,
+ * which holds the rest back (QEMU's model takes no byte from the host while
+ * it is occupied; a real chip overruns, and says so). One byte may be held
+ * here instead (see k_console_isr).
  *
  * The tick: SysTick from the 168 MHz core clock at K_TICK_HZ, kernel level 4
  * (below the console, as the PIT is below the DUART on the RoboCube).
@@ -37,6 +38,15 @@ void (*volatile k_board_tick_callback)(void);
 static uint8_t k_console_buf[K_BOARD_CONSOLE_RING];
 static struct k_console_tx k_console;
 static volatile board_console_rx_sink k_console_rx_fn;
+/* A byte taken from the USART as reception paused (see k_console_isr), and
+ * its flags; handed to the sink when reception resumes. */
+static int k_console_rx_held = -1;
+static unsigned k_console_rx_held_flags;
+
+static unsigned usart_rx_flags(uint32_t sr)
+{
+    return (sr & USART_SR_ORE) != 0u ? BOARD_RX_OVERRUN : (sr & USART_SR_ERRORS) != 0u ? BOARD_RX_ERROR : 0u;
+}
 
 /* Polled output, for kprintf and the fault reports. */
 static void console_putc_polled(char c)
@@ -75,11 +85,19 @@ static void k_console_isr(void *arg)
     (void)arg;
     if ((cr1 & USART_CR1_RXNEIE) != 0u && (sr & USART_SR_RXNE) != 0u) {
         /* reading DR after SR clears RXNE and the error flags */
-        unsigned flags = (sr & USART_SR_ORE) != 0u      ? BOARD_RX_OVERRUN
-                         : (sr & USART_SR_ERRORS) != 0u ? BOARD_RX_ERROR : 0u;
         board_console_rx_sink fn = k_console_rx_fn;
-        if (fn == NULL || !fn((uint8_t)USART_DR(USART1_BASE), flags))
+        if (fn == NULL || !fn((uint8_t)USART_DR(USART1_BASE), usart_rx_flags(sr))) {
             USART_CR1(USART1_BASE) &= ~USART_CR1_RXNEIE;
+            /* A byte that came in before the interrupt was off has raised
+             * the line, and QEMU's model lowers it only when DR is read (a
+             * chip lowers it with RXNEIE): left there, it would call this
+             * handler for ever. It is taken now and handed over on resume. */
+            sr = USART_SR(USART1_BASE);
+            if ((sr & USART_SR_RXNE) != 0u) {
+                k_console_rx_held_flags = usart_rx_flags(sr);
+                k_console_rx_held = (int)(USART_DR(USART1_BASE) & 0xFFu);
+            }
+        }
     }
     if ((cr1 & USART_CR1_TXEIE) != 0u && (sr & USART_SR_TXE) != 0u &&
         k_console_tx_isr(&k_console))
@@ -123,7 +141,13 @@ int stm32f405_console_rx_attach(board_console_rx_sink fn)
 void stm32f405_console_rx_resume(void)
 {
     uint32_t irq = k_arch_irq_save();
-    if (k_console_rx_fn != NULL)
+    board_console_rx_sink fn = k_console_rx_fn;
+    int more = fn != NULL;
+    if (more && k_console_rx_held >= 0) {
+        more = fn((uint8_t)k_console_rx_held, k_console_rx_held_flags);
+        k_console_rx_held = -1;
+    }
+    if (more)
         USART_CR1(USART1_BASE) |= USART_CR1_RXNEIE;
     else
         USART_CR1(USART1_BASE) &= ~USART_CR1_RXNEIE;
@@ -150,6 +174,7 @@ int k_board_init(void)
     (void)k_console_tx_init(&k_console, k_console_buf, sizeof k_console_buf, usart_tx_ready,
                             usart_tx_put, usart_tx_start);
     k_console_rx_fn = NULL;
+    k_console_rx_held = -1;
     if (k_irq_register(ARMV7M_IRQ_VECTOR(USART1_IRQ), CONSOLE_LEVEL, k_console_isr, NULL) != K_OK)
         return -1;
     k_console_register(stm32_console_write, stm32_console_write_sync);

@@ -123,11 +123,16 @@ struct k_thread {
     uintptr_t canary;
 };
 
-/* Stack storage: K_STACK_DEFINE(name, bytes) gives a 4-byte aligned array
- * (the m68k ABI aligns uint32_t to 2 bytes only; k_thread_create wants 4). */
+/* Stack storage: K_STACK_DEFINE(name, bytes) gives an array aligned to
+ * K_ARCH_STACK_ALIGN: 4 bytes (the m68k ABI aligns uint32_t to 2 bytes only;
+ * k_thread_create wants 4), or what the port's stack guard needs (32 on
+ * ARMv7-M, its MPU region; k_thread_create moves a less aligned base up). */
+#ifndef K_ARCH_STACK_ALIGN
+#define K_ARCH_STACK_ALIGN 4u
+#endif
 #define K_STACK_WORDS(bytes) (((bytes) + 3u) / 4u)
 #define K_STACK_DEFINE(name, bytes) \
-    static uint32_t name[K_STACK_WORDS(bytes)] __attribute__((aligned(4)))
+    static uint32_t name[K_STACK_WORDS(bytes)] __attribute__((aligned(K_ARCH_STACK_ALIGN)))
 
 /* pthread_create-like, static: t and the stack belong to the caller.
  * prio 1..31 (0 is the idle thread's). The thread starts when the scheduler

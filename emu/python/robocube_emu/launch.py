@@ -56,7 +56,9 @@ def popen(args=(), kernel=None, icount=ICOUNT, qemu=None, stdin=subprocess.DEVNU
 # What differs between the boards the firmware runs on: the QEMU machine, the
 # -icount setting (each board's `make run` value), the one the target suites
 # and the traces use, the binutils prefix, and the first instruction of the
-# tick interrupt (where a tick span starts). The stm32f405's suites run its
+# tick interrupt (where a tick span starts), and whether the kernel's port
+# guards stacks with an MPU (a thread stopped at its first write into its
+# guard, not at its next switch). The stm32f405's suites run its
 # virtual CPU at 64 ns per instruction instead of make run's 8: what they check
 # is counted in ticks and instructions, never in instructions per tick, and
 # eight times fewer instructions per tick make the long tests eight times
@@ -67,7 +69,8 @@ BOARDS = {
                  "cross": "m68k-linux-gnu-", "tick_entry": "k_isr_entry"},
     "stm32f405": {"machine": "netduinoplus2", "icount": "shift=3,sleep=off",
                   "test_icount": "shift=6,sleep=off",
-                  "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick"},
+                  "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick",
+                  "mpu_stack_guard": True},
 }
 
 

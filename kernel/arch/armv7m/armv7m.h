@@ -52,6 +52,23 @@
 #define MPU_RNR    ARMV7M_REG32(0xE000ED98u)
 #define MPU_RBAR   ARMV7M_REG32(0xE000ED9Cu)
 #define MPU_RASR   ARMV7M_REG32(0xE000EDA0u)
+#define MPU_CTRL_ENABLE     (1u << 0)
+#define MPU_CTRL_PRIVDEFENA (1u << 2)  /* the default map under the regions */
+#define MPU_RBAR_VALID      (1u << 4)  /* RBAR's low bits select the region */
+#define MPU_RASR_ENABLE     (1u << 0)
+#define MPU_RASR_SIZE(log2) (((log2) - 1u) << 1)   /* 2^log2 bytes, 5..32 */
+#define MPU_RASR_AP_RO      (6u << 24) /* read-only, privileged or not */
+#define MPU_RASR_XN         (1u << 28)
+/* The stack guards: the running thread's and the interrupt stack's lowest
+ * 32 bytes are read-only (the kernel reads its guard words; a push into
+ * them faults at once). The highest-numbered regions win where they overlap. */
+#define ARMV7M_GUARD_LOG2          5u
+#define ARMV7M_GUARD_BYTES         (1u << ARMV7M_GUARD_LOG2)
+#define ARMV7M_MPU_REGION_IRQ      6u
+#define ARMV7M_MPU_REGION_THREAD   7u
+#define CFSR_MMARVALID (1u << 7)
+#define CFSR_MSTKERR   (1u << 4)
+#define CFSR_DACCVIOL  (1u << 1)
 
 /* Exception numbers of the system handlers. */
 #define ARMV7M_EXC_HARDFAULT 3u
@@ -111,5 +128,16 @@ struct armv7m_frame {
 };
 void armv7m_fault_report(const struct armv7m_frame *frame, const struct armv7m_fault_regs *regs)
     __attribute__((noreturn));
+
+/* The MPU's guard regions (k_arch_armv7m.c): the interrupt stack's, and the
+ * running thread's (switch.S moves it at every switch). */
+void armv7m_mpu_start(void);
+/* Whether addr lies in the guard of the stack whose base is given. */
+int armv7m_in_guard(uintptr_t addr, const uint32_t *stack_base);
+/* MemManage: a thread that ran into its guard is stopped and the system goes
+ * on (k_stack_overflow_stop_current); returns 0 when the fault is anything
+ * else (the reporter then halts). frame is where the CPU stacked (or tried
+ * to stack) the thread's registers. */
+int armv7m_guard_fault(uint32_t exc_return, uint32_t cfsr);
 
 #endif /* ARMV7M_H */

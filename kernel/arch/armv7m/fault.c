@@ -8,8 +8,11 @@
  * pc is the stacked return address: for a precise fault the faulting
  * instruction itself.
  */
+#include "k_internal.h"
 #include "armv7m.h"
 #include "kernel/lib/kprintf.h"
+
+extern struct k_thread *volatile k_arch_running;
 
 static const char *const exc_names[] = {
     "thread", "reset", "NMI", "HardFault", "MemManage", "BusFault", "UsageFault",
@@ -61,6 +64,19 @@ void armv7m_fault_report(const struct armv7m_frame *frame, const struct armv7m_f
             kprintf("  %s\n", cfsr_bits[i].what);
     if ((cfsr & (1u << 7)) != 0u)
         kprintf("  MemManage fault address 0x%08lx\n", (unsigned long)SCB_MMFAR);
+    if ((cfsr & (CFSR_DACCVIOL | CFSR_MSTKERR)) != 0u) {
+        /* a guard the thread could not be stopped at (a critical section,
+         * an interrupt handler): which stack ran into it */
+        uintptr_t at = (cfsr & CFSR_MMARVALID) != 0u ? SCB_MMFAR : (uintptr_t)frame;
+        size_t words;
+        const uint32_t *irq_stack = k_arch_irq_stack(&words);
+        if (armv7m_in_guard(at, irq_stack) || armv7m_in_guard(at + 31u, irq_stack))
+            kprintf("  stack overflow: the interrupt stack ran into its guard\n");
+        else if (k_arch_running != NULL && (armv7m_in_guard(at, k_arch_running->stack_base) ||
+                                            armv7m_in_guard(at + 31u, k_arch_running->stack_base)))
+            kprintf("  stack overflow: thread '%s' ran into its guard\n",
+                    k_arch_running->name != NULL ? k_arch_running->name : "?");
+    }
     if ((cfsr & (1u << 15)) != 0u)
         kprintf("  BusFault address 0x%08lx\n", (unsigned long)SCB_BFAR);
     kprintf("  R0=%08lx  R1=%08lx  R2=%08lx  R3=%08lx\n", (unsigned long)frame->r0,

@@ -22,9 +22,10 @@ struct k_thread *volatile k_arch_next;
 
 /* The interrupt stack (MSP once the first thread runs). Guard words at its
  * low end like a thread stack's, the topmost checked whenever a handler
- * returns; the rest is filled too, for the high-water mark. 8-byte aligned
- * for the exception frames (AAPCS). */
-static uint32_t k_irq_stack[K_STACK_WORDS(K_IRQ_STACK_BYTES)] __attribute__((aligned(8)));
+ * returns, and write-protected by the MPU (armv7m_mpu_start); the rest is
+ * filled too, for the high-water mark. Aligned for the MPU region (and so
+ * for the exception frames' 8 bytes). */
+static uint32_t k_irq_stack[K_STACK_WORDS(K_IRQ_STACK_BYTES)] __attribute__((aligned(ARMV7M_GUARD_BYTES)));
 #define K_IRQ_STACK_WORDS K_STACK_WORDS(K_IRQ_STACK_BYTES)
 /* Read by the first switch (switch.S). */
 extern uint32_t *const k_arch_irq_stack_top;
@@ -37,6 +38,82 @@ static void (*volatile armv7m_tick_fn)(void);
  * frame). The thread starts in k_arch_thread_trampoline with BASEPRI at the
  * kernel mask: k_thread_start is entered with interrupts disabled. */
 #define FRAME_WORDS (9u + 8u)
+
+/* ---- the MPU's stack guards ----
+ * Two regions of 32 bytes, read-only: the interrupt stack's lowest bytes
+ * (region 6) and the running thread's (region 7, moved by every switch:
+ * switch.S writes the thread's guard_rbar). The kernel still reads the
+ * guard words (its own check, the high-water mark); a push into them faults
+ * at once (MemManage), before anything below the stack is touched. Stacks
+ * start on a 32-byte boundary (K_ARCH_STACK_ALIGN), so a thread's region
+ * is its 16 bytes of guard words and the 16 above them. Everything else
+ * keeps the default memory map (PRIVDEFENA). */
+static uintptr_t guard_base(const uint32_t *stack_base)
+{
+    return ((uintptr_t)stack_base + ARMV7M_GUARD_BYTES - 1u) & ~(uintptr_t)(ARMV7M_GUARD_BYTES - 1u);
+}
+
+static uint32_t guard_rbar(const uint32_t *stack_base, unsigned region)
+{
+    return (uint32_t)guard_base(stack_base) | MPU_RBAR_VALID | region;
+}
+
+int armv7m_in_guard(uintptr_t addr, const uint32_t *stack_base)
+{
+    uintptr_t g = guard_base(stack_base);
+    return stack_base != NULL && addr >= g && addr < g + ARMV7M_GUARD_BYTES;
+}
+
+/* Whether the CPU's 8-word frame, stacked at sp or below it (a failed
+ * stacking may or may not have moved SP), meets the guard. */
+static int frame_meets_guard(uintptr_t sp, const uint32_t *stack_base)
+{
+    uintptr_t g = guard_base(stack_base);
+    return stack_base != NULL && sp + 32u > g && sp < g + 2u * ARMV7M_GUARD_BYTES;
+}
+
+void armv7m_mpu_start(void)
+{
+    const uint32_t rasr = MPU_RASR_ENABLE | MPU_RASR_SIZE(ARMV7M_GUARD_LOG2) | MPU_RASR_AP_RO |
+                          MPU_RASR_XN;
+    if ((MPU_TYPE >> 8 & 0xFFu) < 8u)
+        return; /* no MPU with regions 6 and 7: the guard words alone */
+    MPU_RBAR = guard_rbar(k_irq_stack, ARMV7M_MPU_REGION_IRQ);
+    MPU_RASR = rasr;
+    /* the thread region guards the interrupt stack too until the first switch */
+    MPU_RBAR = guard_rbar(k_irq_stack, ARMV7M_MPU_REGION_THREAD);
+    MPU_RASR = rasr;
+    MPU_CTRL = MPU_CTRL_ENABLE | MPU_CTRL_PRIVDEFENA;
+    __asm__ __volatile__("dsb\n\tisb" : : : "memory");
+}
+
+/* A fault from thread mode (armv7m_fault): a write into the running
+ * thread's guard, or the CPU's failed stacking of its frame there, outside
+ * a critical section, stops that thread. Its stack is given up, so the
+ * frame it returns to is built at its top: k_stack_overflow_stop_current,
+ * in thread mode, stops it the kernel's way and switches away. */
+int armv7m_guard_fault(uint32_t exc_return, uint32_t cfsr)
+{
+    struct k_thread *t = k_arch_running;
+    uint32_t basepri, psp, *frame;
+    int hit;
+    __asm__ __volatile__("mrs %0, basepri\n\tmrs %1, psp" : "=r"(basepri), "=r"(psp));
+    if ((exc_return & 4u) == 0u || t == NULL || basepri != 0u)
+        return 0;
+    hit = ((cfsr & (CFSR_DACCVIOL | CFSR_MMARVALID)) == (CFSR_DACCVIOL | CFSR_MMARVALID) &&
+           armv7m_in_guard(SCB_MMFAR, t->stack_base)) ||
+          ((cfsr & CFSR_MSTKERR) != 0u && frame_meets_guard(psp, t->stack_base));
+    if (!hit)
+        return 0;
+    SCB_CFSR = cfsr & 0xFFu; /* the MemManage bits: taken care of */
+    frame = (uint32_t *)((uintptr_t)(t->stack_base + t->stack_words) & ~(uintptr_t)7u) - 8u;
+    frame[0] = frame[1] = frame[2] = frame[3] = frame[4] = 0u;         /* R0-R3, R12 */
+    frame[5] = (uint32_t)(uintptr_t)armv7m_halt;                         /* LR */
+    frame[6] = (uint32_t)(uintptr_t)k_stack_overflow_stop_current & ~1u; /* PC */
+    frame[7] = 0x01000000u;                                              /* xPSR: Thumb */
+    __asm__ __volatile__("msr psp, %0" : : "r"(frame) : "memory");
+    return 1;
+}
 void k_arch_thread_init(struct k_thread *t)
 {
     uintptr_t top = (uintptr_t)(t->stack_base + t->stack_words) & ~(uintptr_t)7u;
@@ -45,9 +122,12 @@ void k_arch_thread_init(struct k_thread *t)
     /* k_init creates the idle thread before any interrupt can be taken
      * (BASEPRI masks them from reset to the first thread): the interrupt
      * stack gets its guard and fill then, once. */
-    if (k_irq_stack[0] != K_STACK_GUARD)
+    if (k_irq_stack[0] != K_STACK_GUARD) {
         for (i = 0; i < K_IRQ_STACK_WORDS; i++)
             k_irq_stack[i] = K_STACK_GUARD;
+        armv7m_mpu_start();
+    }
+    t->ctx.guard_rbar = guard_rbar(t->stack_base, ARMV7M_MPU_REGION_THREAD);
     for (i = 0; i < FRAME_WORDS; i++)
         sp[i] = 0;
     sp[0] = K_ARCH_BASEPRI_MASK;

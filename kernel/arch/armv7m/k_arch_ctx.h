@@ -18,8 +18,17 @@
 #include <stdint.h>
 
 struct k_arch_context {
-    uint32_t sp; /* offset 0: switch.S relies on it */
+    uint32_t sp;         /* offset 0: switch.S relies on it */
+    uint32_t guard_rbar; /* offset 4: the MPU's RBAR for this stack's guard (switch.S) */
 };
+
+/* Stacks start on a 32-byte boundary: the MPU's smallest region, which
+ * covers a running thread's guard words (k_arch_armv7m.c). */
+#define K_ARCH_STACK_ALIGN 32u
+/* The lowest bytes of every stack the port's hardware write-protects (the
+ * MPU): a thread is stopped at its first write there, so an overflow never
+ * reaches what lies below a stack. */
+#define K_ARCH_STACK_GUARD_BYTES 32u
 
 /* The NVIC priority of kernel interrupt level L (1..7, 7 most urgent), in the
  * upper four bits the STM32F4 implements: (8 - L) << 4, so level 7 is 0x10

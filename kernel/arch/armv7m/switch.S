@@ -71,6 +71,10 @@ armv7m_pendsv:
     ldr     r2, [r2]
     msr     msp, r2
 2:  str     r1, [r3]                /* running = next */
+    ldr     r2, [r1, #4]            /* next->ctx.guard_rbar: the MPU guards its stack */
+    ldr     r0, =0xE000ED9C         /* MPU_RBAR */
+    str     r2, [r0]
+    dsb
     ldr     r12, [r1]               /* next->ctx.sp */
     ldmia   r12!, {r2, r4-r11}
     msr     psp, r12
@@ -90,14 +94,26 @@ k_arch_thread_trampoline:
     b       armv7m_halt
     .size   k_arch_thread_trampoline, . - k_arch_thread_trampoline
 
-/* HardFault, MemManage, BusFault, UsageFault: the frame the CPU stacked is
- * on PSP or MSP (EXC_RETURN bit 2 says which); R4-R11, EXC_RETURN and MSP
- * are pushed below for the reporter, which prints and halts. */
+/* HardFault, MemManage, BusFault, UsageFault. A thread that ran into its
+ * stack guard (armv7m_guard_fault) is stopped and the system goes on;
+ * anything else is reported: the frame the CPU stacked is on PSP or MSP
+ * (EXC_RETURN bit 2 says which); R4-R11, EXC_RETURN and MSP are pushed
+ * below for the reporter, which prints and halts. */
     .globl  armv7m_fault
     .type   armv7m_fault, %function
     .thumb_func
 armv7m_fault:
-    mrs     r2, msp
+    tst     lr, #4                  /* from a thread: maybe its stack guard */
+    beq     1f
+    push    {r4, lr}
+    mov     r0, lr
+    ldr     r1, =0xE000ED28         /* CFSR */
+    ldr     r1, [r1]
+    bl      armv7m_guard_fault
+    pop     {r4, lr}
+    cbz     r0, 1f
+    bx      lr                      /* to k_stack_overflow_stop_current in the thread */
+1:  mrs     r2, msp
     tst     lr, #4
     ite     eq
     mrseq   r0, msp
