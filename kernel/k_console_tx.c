@@ -41,8 +41,11 @@ static int k_console_tx_feed(struct k_console_tx *tx)
 int k_console_tx_isr(struct k_console_tx *tx)
 {
     int done = k_console_tx_feed(tx) && !tx->lf_held;
-    if (k_sem_has_waiter(&tx->space))
-        (void)k_sem_post(&tx->space);
+    /* Posted whether or not a writer waits yet (the semaphore keeps one
+     * wake-up): a writer that found the ring full and has not reached its
+     * wait when this drains the ring must not wait for an interrupt that
+     * will not come. */
+    (void)k_sem_post(&tx->space);
     return done;
 }
 
