@@ -41,7 +41,9 @@
 # sensor noise) as for the ecosystem (emu/eco.mk), the summary in build/run/x/.
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
-APP_DEFAULT := ecosystem
+# What make run boots when APP is not given: the ecosystem on the RoboCube;
+# on another board, whose hardware it lacks, table1 (Table 2 from bsched.c).
+APP_DEFAULT := $(if $(filter-out robocube,$(or $(BOARD),robocube)),table1,ecosystem)
 APP         ?= $(APP_DEFAULT)
 # Libraries every image may link: the target sources directly in these folders.
 APP_LIB_DIRS := drivers net pdl posix

@@ -87,8 +87,8 @@ $$(eval $$(call stm32_objrules,$(1),$(4)))
 $(2): $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS)) $$(STM32_LDSCRIPT)
 	$$(call quiet,LD,$$@)$$(ARM_CC) $$(STM32_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ \
 	    $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS)) -lc -lgcc
-	$$(ARM_OBJCOPY) -O binary $$@ $$(@:.elf=.bin)
-	$$(ARM_SIZE) $$@
+	$$(call quiet,OBJCOPY,$$@)$$(ARM_OBJCOPY) -O binary $$@ $$(@:.elf=.bin)
+	$$(if $$(filter 1,$$(V)),$$(ARM_SIZE) $$@,@true)
 
 .SECONDARY: $$(patsubst %,$(1)/%.o,$(3)) $$(patsubst %,$(or $(5),$(1))/%.o,$$(STM32_BASE_SRCS))
 endef
