@@ -134,10 +134,10 @@ void armv7m_fault_report(const struct armv7m_frame *frame, const struct armv7m_f
 void armv7m_mpu_start(void);
 /* Whether addr lies in the guard of the stack whose base is given. */
 int armv7m_in_guard(uintptr_t addr, const uint32_t *stack_base);
-/* MemManage: a thread that ran into its guard is stopped and the system goes
- * on (k_stack_overflow_stop_current); returns 0 when the fault is anything
- * else (the reporter then halts). frame is where the CPU stacked (or tried
- * to stack) the thread's registers. */
+/* A fault taken from thread mode (exc_return, the CFSR as it was): when the
+ * running thread ran into its guard outside a critical section, its PSP is
+ * set to a frame that stops it (k_stack_overflow_stop_current) and 1 is
+ * returned; 0 for any other fault (the reporter then halts). */
 int armv7m_guard_fault(uint32_t exc_return, uint32_t cfsr);
 
 #endif /* ARMV7M_H */
