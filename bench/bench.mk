@@ -9,7 +9,7 @@ BENCH_DIR    := $(BUILD)/bench
 BENCH_PROCS  := 4096
 BENCH_CYCLES ?= 256
 BENCH_LIB    := bsched/bsched.c bsched/proofs/ref/bsched_fig7.c
-BENCH_HDRS   := bsched/bsched.h bsched/proofs/ref/bsched_fig7.h bench/bench_core.h
+BENCH_HDRS   := bsched/bsched.h bsched/proofs/ref/bsched_fig7.h bench/bench_core.h bench/bench_image.h
 # The CPU32 image: the firmware's startup and console, no kernel; the library at
 # BSCHED_MAX_PROCS = 4096 (the firmware base objects carry it at 16).
 BENCH_FW_SRCS := boards/robocube/start.S kernel/arch/cpu32/exceptions.c kernel/lib/kprintf.c \

@@ -13,7 +13,7 @@ CPU32: bench-cpu32.elf runs on qemu-system-m68k -M robocube under
 functions (every text symbol of bsched.c and bsched_fig7.c, and memcpy and
 memset, should the compiler call them) and bench_mark(). One log line is one
 executed instruction; the lines between two bench_mark() calls are a phase
-(bench_cpu32.c: five per case). The log is read from a FIFO, never stored.
+(bench_image.h: five per case). The log is read from a FIFO, never stored.
 
 Prints one line per case and platform, ending with the ratio, and writes them
 to --out. Exit 1 if a case is missing or the two dispatchers disagreed.

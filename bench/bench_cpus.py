@@ -10,8 +10,9 @@ QEMU's exec trace under -icount (deterministic, not wall-clock):
   PDL cycle with 20 processes and 40 quantities
       pdl/tests/target/pdl_measure.py (cycle_costs) on each board's pdl_bench
 
-The kernel and PDL parts run in a child process per board (K_BOARD selects
-the board in robocube_emu.launch.BOARDS). Writes the table to --out.
+The kernel and PDL figures come from those two scripts, each run as its own
+process with K_BOARD naming the board (robocube_emu.launch.BOARDS), printing
+JSON. Writes the table to --out.
 """
 import argparse
 import json
@@ -21,45 +22,50 @@ import subprocess
 import sys
 from pathlib import Path
 
+import bench  # bench/bench.py, beside this script
+from robocube_emu import launch
+
 ROOT = Path(__file__).resolve().parents[1]
-for sub in ("bench", "kernel/tests/target-kernel", "pdl/tests/target"):
-    sys.path.insert(0, str(ROOT / sub))
+KMEASURE = ROOT / "kernel/tests/target-kernel/kmeasure.py"
+PDL_MEASURE = ROOT / "pdl/tests/target/pdl_measure.py"
 
 BOARDS = ("robocube", "stm32f405")
 CPU = {"robocube": "MC68332 (CPU32)", "stm32f405": "Cortex-M4 (STM32F405)"}
 SIZES = (9, 256, 4096)
 
 
-def child(board, ktest, pdl_bench, qemu):
-    """In the child (K_BOARD set): the kernel and PDL figures, as JSON."""
-    import kmeasure
-    import pdl_measure
-    k = kmeasure.measure(qemu, Path(ktest))
-    cycles, _ = pdl_measure.cycle_costs(qemu, Path(pdl_bench))
+def measured(board, script, *args):
+    """What SCRIPT (--json or --cycles-json) printed for BOARD, decoded."""
+    r = subprocess.run([sys.executable, str(script), *map(str, args)],
+                       env=dict(os.environ, K_BOARD=board), capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.exit(f"bench_cpus: {script.name} on {board} failed (exit {r.returncode}):\n"
+                 f"{r.stdout}{r.stderr}")
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def kernel_and_pdl(board, ktest, pdl_bench, qemu):
+    """The kernel and PDL figures of BOARD: medians of the kernel spans, the
+    mean PDL cycle with 20 processes."""
+    k = measured(board, KMEASURE, "--json", ktest, qemu)
+    cycles = measured(board, PDL_MEASURE, "--cycles-json", pdl_bench, qemu)
     pdl20 = [c["total"] for c in cycles if c["n"] == 20]
-    print(json.dumps({"tick": statistics.median(k["tick_switch"]),
-                      "handoff": statistics.median(k["sem_handoff"]),
-                      "pdl20": statistics.mean(pdl20), "pdl20_cycles": len(pdl20)}))
+    return {"tick": statistics.median(k["tick_switch"]),
+            "handoff": statistics.median(k["sem_handoff"]),
+            "pdl20": statistics.mean(pdl20), "pdl20_cycles": len(pdl20)}
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--child", choices=BOARDS)
     for b in BOARDS:
-        ap.add_argument(f"--{b}-bench")
-        ap.add_argument(f"--{b}-ktest")
-        ap.add_argument(f"--{b}-pdl")
-        ap.add_argument(f"--{b}-qemu")
+        ap.add_argument(f"--{b}-bench", required=True)
+        ap.add_argument(f"--{b}-ktest", required=True)
+        ap.add_argument(f"--{b}-pdl", required=True)
+        ap.add_argument(f"--{b}-qemu", required=True)
     ap.add_argument("--cycles", type=int, default=256)
     ap.add_argument("--out")
     a = vars(ap.parse_args())
-    if a["child"]:
-        b = a["child"]
-        child(b, a[f"{b}_ktest"], a[f"{b}_pdl"], a[f"{b}_qemu"])
-        return 0
 
-    import bench
-    from robocube_emu import launch
     res = {}
     for b in BOARDS:
         cfg = launch.BOARDS[b]
@@ -69,12 +75,7 @@ def main():
             [elf.parent / "cpu32/bsched/bsched.c.o", elf.parent / "cpu32/bsched/proofs/ref/bsched_fig7.c.o"]
         sched, _ = bench.cpu32_run(elf, a[f"{b}_qemu"], objs, a["cycles"], machine=cfg["machine"],
                                    icount=cfg["icount"], cross=cfg["cross"])
-        env = dict(os.environ, K_BOARD=b)
-        out = subprocess.run([sys.executable, __file__, "--child", b,
-                              f"--{b}-ktest", a[f"{b}_ktest"], f"--{b}-pdl", a[f"{b}_pdl"],
-                              f"--{b}-qemu", a[f"{b}_qemu"]],
-                             env=env, check=True, capture_output=True, text=True).stdout
-        res[b] = {"sched": sched, **json.loads(out.strip().splitlines()[-1])}
+        res[b] = {"sched": sched, **kernel_and_pdl(b, a[f"{b}_ktest"], a[f"{b}_pdl"], a[f"{b}_qemu"])}
         print(f"{b}: done", flush=True)
 
     rows = []

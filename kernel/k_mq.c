@@ -16,12 +16,18 @@ int k_mq_init(struct k_mq *q, void *storage, size_t msg_size, size_t capacity)
     return K_OK;
 }
 
+/* An initialised queue and a message buffer: what send and receive require. */
+static int k_mq_args_ok(const struct k_mq *q, const void *msg)
+{
+    return q != NULL && q->magic == K_MAGIC_MQ && msg != NULL;
+}
+
 int k_mq_send_ticks(struct k_mq *q, const void *msg, k_ticks_t timeout)
 {
     uint32_t irq;
     int32_t r = K_OK;
     struct k_thread *w;
-    if (q == NULL || q->magic != K_MAGIC_MQ || msg == NULL)
+    if (!k_mq_args_ok(q, msg))
         return K_EINVAL;
     irq = k_arch_irq_save();
     w = k_waitq_first(&q->receivers);
@@ -43,12 +49,11 @@ int k_mq_receive_ticks(struct k_mq *q, void *msg, k_ticks_t timeout)
 {
     uint32_t irq;
     int32_t r = K_OK;
-    struct k_thread *w;
-    if (q == NULL || q->magic != K_MAGIC_MQ || msg == NULL)
+    if (!k_mq_args_ok(q, msg))
         return K_EINVAL;
     irq = k_arch_irq_save();
     if (k_msgbuf_get(&q->buf, msg) == 0) {
-        w = k_waitq_first(&q->senders);
+        struct k_thread *w = k_waitq_first(&q->senders);
         if (w != NULL) {
             (void)k_msgbuf_put(&q->buf, w->wait_src);
             k_wake(w, K_OK);

@@ -173,22 +173,31 @@ int k_mutex_timedlock(struct k_mutex *m, const struct k_timespec *abs_monotonic)
     return r != K_OK ? r : k_timed_result(k_mutex_lock_ticks(m, t), K_EBUSY);
 }
 
+/* With interrupts masked: passes m on if the running thread owns it (K_OK),
+ * else K_EPERM and m stays as it is. The release step of unlock and of a
+ * condition wait. */
+static int k_mutex_release_own(struct k_mutex *m)
+{
+    if (m->owner != k_kernel.current)
+        return K_EPERM;
+    k_mutex_pass(m, K_OK);
+    return K_OK;
+}
+
 int k_mutex_unlock(struct k_mutex *m)
 {
     uint32_t irq;
+    int r;
     if (m == NULL || m->magic != K_MAGIC_MUTEX)
         return K_EINVAL;
     if (k_in_isr())
         return K_EISR;
     irq = k_arch_irq_save();
-    if (m->owner != k_kernel.current) {
-        k_arch_irq_restore(irq);
-        return K_EPERM;
-    }
-    k_mutex_pass(m, K_OK);
-    k_resched();
+    r = k_mutex_release_own(m);
+    if (r == K_OK)
+        k_resched();
     k_arch_irq_restore(irq);
-    return K_OK;
+    return r;
 }
 
 void k_mutex_waiter_gone(struct k_mutex *m)
@@ -225,13 +234,12 @@ int k_cond_wait_ticks(struct k_cond *c, struct k_mutex *m, k_ticks_t timeout)
     if (k_in_isr())
         return K_EISR;
     irq = k_arch_irq_save();
-    if (m->owner != k_kernel.current) {
+    /* The unlock and the wait are one step with interrupts masked: a signal
+     * can come only once this thread is in c's queue. */
+    if (k_mutex_release_own(m) != K_OK) {
         k_arch_irq_restore(irq);
         return K_EPERM;
     }
-    /* The unlock and the wait are one step with interrupts masked: a signal
-     * can come only once this thread is in c's queue. */
-    k_mutex_pass(m, K_OK);
     if (timeout == K_NO_WAIT) {
         k_resched(); /* a waiter the unlock woke may be more urgent */
         r = K_ETIMEDOUT;

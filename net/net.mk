@@ -1,16 +1,13 @@
 # The radio network stack (net/), its host peer (tools/netpeer) and the medium
 # (emu/python/robocube_emu/radio_medium.py).
 #   make check-net-unit     cmocka tests of every layer, under ASan/UBSan
-#   make check-net-target   boards on the medium: 2 and 3 stations, the host
-#                           peer both ways, a faulty medium, a station that leaves,
-#                           the medium's faults and the board model's radio mode
 #   make net-soak BOARDS=N HOSTS=H MESSAGES=M LOSS=P CORRUPT=Q BYTE_ERRORS=R SEED=S FEC=0|1
-#   make check-net-soak     three short soaks (frame faults; byte errors with FEC;
-#                           8 host peers and a board sending at once)
 #   make net-soak-fan-in    the last one long: FAN_IN_MESSAGES (20) per pair
 #   make net-interop        the host-peer-first tests INTEROP_RUNS (10) times
 #   make net-bench          goodput and latency figures (net/README.md), with
 #                           authentication and without (its cost)
+# The suites of the netnode image (net-target, net-soak) are declared beside it,
+# in apps/netnode/app.mk.
 NET_BUILD      := $(BUILD)/net
 NET_UNIT_NAMES := frame xdr link mac fec
 NET_UNIT_TESTS := $(patsubst %,$(NET_BUILD)/tests/test_%,$(NET_UNIT_NAMES))
@@ -25,10 +22,10 @@ net_test_libs_xdr   := -I/usr/include/tirpc -ltirpc
 
 ALL += $(NET_UNIT_TESTS) $(NET_BUILD)/tests/xdr_sample $(NET_BUILD)/tests/fec_sample \
        $(NET_BUILD)/tests/wire_constants
-CHECKS += net-unit net-target net-soak
+CHECKS += net-unit
 HOST_UNIT_CHECKS += net-unit
 
-.PHONY: check-net-unit check-net-target check-net-soak net-soak net-bench
+.PHONY: check-net-unit net-soak net-bench
 
 $(NET_BUILD)/tests/test_%: net/tests/test_%.c $(wildcard net/*.h) $(wildcard net/*.c)
 	@mkdir -p $(@D)
@@ -93,13 +90,6 @@ $(NET_BUILD)/tests/wire_constants: net/tests/wire_constants.c $(wildcard net/*.h
 	@mkdir -p $(@D)
 	$(call quiet,HOSTCC,$@)$(HOST_CC) $(NET_HOST_FLAGS) -o $@ net/tests/wire_constants.c
 
-check-net-target:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=netnode $(NET_BUILD)/tests/xdr_sample \
-	    $(NET_BUILD)/tests/fec_sample $(NET_BUILD)/tests/wire_constants
-	@NETNODE_ELF=$(NETNODE_ELF) $(ROOT)/ci/pytest-suite net-target --durations=0 \
-	    $(ROOT)/net/tests/target
-
 # The host peer speaking first to a fresh board (the tests marked interop),
 # INTEROP_RUNS times in a row: the evidence that the bug of net/README.md
 # ("Fixed bugs") stays fixed. Niced, as every heavy run.
@@ -144,28 +134,6 @@ net-soak:
 	@$(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) --boards $(BOARDS) --hosts $(HOSTS) \
 	    --messages $(MESSAGES) --loss $(LOSS) --corrupt $(CORRUPT) --byte-errors $(BYTE_ERRORS) \
 	    --seed $(SEED) $(if $(filter 1 on yes,$(FEC)),--fec)
-
-# The short soaks of make check: (1) 2 boards and the host peer, 10 % frame
-# loss, 10 % corrupted frames, 3 messages per pair (18 messages); (2) the
-# issue's goal with FEC: 3 boards and the host peer, 10 % byte errors per
-# character, 10 % frame loss, all sending at once, 3 messages per pair (36);
-# (3) fan-in: 8 host peers and the board all sending to each other at once,
-# 3 messages per pair (48; the long one is make net-soak-fan-in).
-# Not niced: beside the proof lane's two busy cores a niced soak got a few
-# per cent of a core (20-50 lock-step rounds a second, 5-6 minutes for the
-# first soak alone). Every timer runs in the boards' time, so a slow host
-# costs only wall time; --timeout is the guard against a hang.
-NET_SOAK_CHECKS := "--boards 2 --messages 3 --loss 0.1 --corrupt 0.1 --seed 1" \
-                   "--boards 3 --messages 3 --loss 0.1 --byte-errors 0.1 --fec --seed 1" \
-                   "--boards 1 --hosts 8 --messages 3 --seed 1"
-check-net-soak:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware APP=netnode
-	@p=0; f=0; for args in $(NET_SOAK_CHECKS); do \
-	    out=$$($(PYTHON) tools/netpeer/soak.py --elf $(NETNODE_ELF) $$args \
-	        --timeout 600); rc=$$?; echo "$$out" | tail -2; \
-	    if [ $$rc -eq 0 ]; then p=$$((p + 1)); else f=$$((f + 1)); fi; \
-	done; $(call record,net-soak,$$p,$$f); [ $$f -eq 0 ]
 
 # Eight stations (host peers) and one board all sending to each other at
 # once: FAN_IN_MESSAGES per pair, everything delivered in order or it fails.

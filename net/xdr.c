@@ -189,15 +189,24 @@ int nxdr_opaque(struct nxdr *x, uint8_t *data, uint32_t len)
     return 1;
 }
 
+/* The length (or count) word before variable-length data: *n, at most max,
+ * is written; a decoded one above max is refused. */
+static int nxdr_length(struct nxdr *x, uint32_t *n, uint32_t max)
+{
+    if (x->op == NXDR_ENCODE && *n > max)
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
+    if (!nxdr_u_int(x, n))
+        return 0;
+    if (*n > max)
+        return nxdr_fail_why(x, NXDR_ETOOLONG);
+    return 1;
+}
+
 int nxdr_bytes(struct nxdr *x, uint8_t *data, uint32_t *len, uint32_t max)
 {
     uint32_t n = *len;
-    if (x->op == NXDR_ENCODE && n > max)
-        return nxdr_fail_why(x, NXDR_ETOOLONG);
-    if (!nxdr_u_int(x, &n))
+    if (!nxdr_length(x, &n, max))
         return 0;
-    if (n > max)
-        return nxdr_fail_why(x, NXDR_ETOOLONG);
     if (!nxdr_opaque(x, data, n))
         return 0;
     *len = n;
@@ -240,16 +249,12 @@ int nxdr_array(struct nxdr *x, void *array, uint32_t *count, uint32_t max, size_
               nxdr_proc proc)
 {
     uint32_t n = *count;
-    if (x->op == NXDR_ENCODE && n > max)
-        return nxdr_fail_why(x, NXDR_ETOOLONG);
-    if (!nxdr_u_int(x, &n))
+    if (!nxdr_length(x, &n, max))
         return 0;
-    if (n > max)
-        return nxdr_fail_why(x, NXDR_ETOOLONG);
     /* Each element takes at least 4 bytes: refuse counts the input cannot hold
      * before calling proc (a decoder must not spin on a huge claimed count).
      * n is not cast to size_t: a 16-bit size_t would truncate it. pos <= size
-     * here (nxdr_u_int just succeeded). */
+     * here (nxdr_length just read the count). */
     if (x->op == NXDR_DECODE && n > (x->size - x->pos) / 4u)
         return nxdr_fail(x);
     if (!nxdr_vector(x, array, n, elsize, proc))

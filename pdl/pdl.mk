@@ -3,9 +3,10 @@
 #   make pdl-host-tests        build/pdl/tests/test_pdl (+ examples), host build of the runtime
 #   make check-pdl-unit        host unit tests of the runtime and the example behaviours (cmocka)
 #                              + compile-time refusals (add_value on a sensor, ...)
-#   make check-pdl-target      a PDL image on the emulated board (pytest over QMP)
 #   make pdl-bench             cycle cost, CPU load at 1 kHz, stack, flash/RAM (emulated board)
 #   make pdl-host-lib          build/pdl/libpdl_host.a: the host runtime for simulators
+# The PDL images' suite (pdl-target: pdl/tests/target on the emulated board) is
+# declared beside its images, in apps/pdl_demo/app.mk.
 
 PDL_BUILD      := $(BUILD)/pdl
 # The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
@@ -91,15 +92,7 @@ check-pdl-unit: $(PDL_HOST_TESTS) $(PDL_README_TEST)
 	$(call record,pdl-unit,$$p,$$f); [ $$rc -eq 0 ]
 
 # ---- on the emulated board ----
-CHECKS += pdl-target
-PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench) $(call app_elf,pdl_types)
-
-.PHONY: check-pdl-target pdl-bench
-check-pdl-target:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory $(PDL_TARGET_ELFS) $(PDL_TYPES_HOST)
-	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) PDL_TYPES_HOST=$(PDL_TYPES_HOST) ci/pytest-suite pdl-target pdl/tests/target
-
+.PHONY: pdl-bench
 # Every figure of pdl/README.md "Speed", printed and kept in build/pdl/bench.txt.
 pdl-bench:
 	@$(SETUP) base m68k qemu
@@ -107,10 +100,3 @@ pdl-bench:
 	@mkdir -p $(PDL_BUILD)
 	@BSCHED_QEMU=$(QEMU_M68K) $(PYTHON) pdl/tests/target/pdl_measure.py \
 	    $(call app_elf,pdl_bench) $(QEMU_M68K) | tee $(PDL_BUILD)/bench.txt
-
-# apps/pdl_types on the host runtime (its own main: pdl_sleep_ms runs the
-# cycles), to compare with the board's output line for line.
-PDL_TYPES_HOST := $(PDL_BUILD)/pdl_types_host
-$(PDL_TYPES_HOST): apps/pdl_types/main.c $(PDL_HOST_SRCS) $(PDL_HEADERS)
-	@mkdir -p $(@D)
-	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PDL_HOST_CFLAGS) -DPDL_HOST=1 -o $@ $< $(PDL_HOST_SRCS)

@@ -57,6 +57,18 @@ static struct posix_mqd *posix_mqd_of(mqd_t d)
     return &posix_mqds[d];
 }
 
+/* The descriptor's entry if it is open for sending (sending) or receiving,
+ * or NULL (errno EBADF). */
+static struct posix_mqd *posix_mqd_open_for(mqd_t d, int sending)
+{
+    struct posix_mqd *e = posix_mqd_of(d);
+    if (e != NULL && (e->flags & O_ACCMODE) == (sending ? O_RDONLY : O_WRONLY)) {
+        errno = EBADF;
+        return NULL;
+    }
+    return e;
+}
+
 /* "/name": 1..MQ_NAME_MAX characters after the slash, no other slash. */
 static int posix_mq_name(const char *name, const char **bare)
 {
@@ -248,13 +260,11 @@ static int posix_mq_transfer(const struct posix_mqd *d, struct posix_mq_slot *sl
 static int posix_mq_send(mqd_t mqdes, const char *msg_ptr, size_t msg_len, unsigned msg_prio,
                          const struct timespec *abstime, int timed)
 {
-    struct posix_mqd *d = posix_mqd_of(mqdes);
+    struct posix_mqd *d = posix_mqd_open_for(mqdes, 1);
     struct posix_mq_slot slot;
     int r;
     if (d == NULL)
         return -1;
-    if ((d->flags & O_ACCMODE) == O_RDONLY)
-        return posix_mq_fail(EBADF);
     if (msg_prio >= MQ_PRIO_MAX || (msg_ptr == NULL && msg_len > 0u))
         return posix_mq_fail(EINVAL);
     if (msg_len > (size_t)d->mq->msgsize)
@@ -280,13 +290,11 @@ int mq_timedsend(mqd_t mqdes, const char *msg_ptr, size_t msg_len, unsigned msg_
 static ssize_t posix_mq_receive(mqd_t mqdes, char *msg_ptr, size_t msg_len, unsigned *msg_prio,
                                 const struct timespec *abstime, int timed)
 {
-    struct posix_mqd *d = posix_mqd_of(mqdes);
+    struct posix_mqd *d = posix_mqd_open_for(mqdes, 0);
     struct posix_mq_slot slot;
     int r;
     if (d == NULL)
         return -1;
-    if ((d->flags & O_ACCMODE) == O_WRONLY)
-        return posix_mq_fail(EBADF);
     if (msg_ptr == NULL)
         return posix_mq_fail(EINVAL);
     if (msg_len < (size_t)d->mq->msgsize)

@@ -158,32 +158,27 @@ static void step_response(unsigned m, int32_t v, int32_t ms)
 
 /* The numbers of the line being run, for the commands below. */
 static int32_t a[ARGS_MAX];
+/* The commands' parameters (struct cmd's run): they take numbers only, from
+ * a[] (run_command parses them), so the words and the line go unused. */
+#define NUMBERS_ONLY int argc __attribute__((unused)), char **argv __attribute__((unused)), \
+    const char *line __attribute__((unused))
 
-static void m_pwm(int argc, char **argv, const char *line)
+static void m_pwm(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_pwm(ch, (uint32_t)a[1], (int)a[2]));
 }
 
-static void m_ticks(int argc, char **argv, const char *line)
+static void m_ticks(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_pwm_ticks(ch, (uint16_t)a[1], (uint16_t)a[2]));
 }
 
-static void m_pwmget(int argc, char **argv, const char *line)
+static void m_pwmget(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     uint32_t hz;
     int pm;
     r = tpu_pwm_get(ch, &hz, &pm);
@@ -193,22 +188,16 @@ static void m_pwmget(int argc, char **argv, const char *line)
         k_printf("ok %lu %d\n", (unsigned long)hz, pm);
 }
 
-static void m_dout(int argc, char **argv, const char *line)
+static void m_dout(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_dio_write(ch, (int)a[1]));
 }
 
-static void m_din(int argc, char **argv, const char *line)
+static void m_din(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     r = tpu_dio_read(ch);
     if (r < 0)
         reply(r);
@@ -216,22 +205,16 @@ static void m_din(int argc, char **argv, const char *line)
         k_printf("ok %d\n", r);
 }
 
-static void m_itc(int argc, char **argv, const char *line)
+static void m_itc(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_itc_start(ch, (unsigned)a[1]));
 }
 
-static void m_itcget(int argc, char **argv, const char *line)
+static void m_itcget(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     uint32_t c;
     r = tpu_itc_count(ch, &c);
     if (r < 0)
@@ -240,31 +223,22 @@ static void m_itcget(int argc, char **argv, const char *line)
         k_printf("ok %lu\n", (unsigned long)c);
 }
 
-static void m_itcclr(int argc, char **argv, const char *line)
+static void m_itcclr(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_itc_clear(ch));
 }
 
-static void m_qdec(int argc, char **argv, const char *line)
+static void m_qdec(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_qdec_start(ch, (unsigned)a[1]));
 }
 
-static void m_qpos(int argc, char **argv, const char *line)
+static void m_qpos(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     int32_t pos;
     r = tpu_qdec_position(ch, &pos);
     if (r < 0)
@@ -273,44 +247,32 @@ static void m_qpos(int argc, char **argv, const char *line)
         k_printf("ok %ld\n", (long)pos);
 }
 
-static void m_qset(int argc, char **argv, const char *line)
+static void m_qset(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_qdec_set(ch, a[1]));
 }
 
-static void m_irq(int argc, char **argv, const char *line)
+static void m_irq(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     if (ch < TPU_CHANNELS)
         irq_counts[ch] = 0;
     reply(tpu_attach_irq(ch, count_irq, NULL));
 }
 
-static void m_irqget(int argc, char **argv, const char *line)
+static void m_irqget(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     if (ch >= TPU_CHANNELS)
         reply(DRV_ERR_CHANNEL);
     else
         k_printf("ok %lu %lu\n", (unsigned long)irq_counts[ch], (unsigned long)tpu_irq_count(ch));
 }
 
-static void m_irqwait(int argc, char **argv, const char *line)
+static void m_irqwait(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     if (!(ch < TPU_CHANNELS && a[1] >= 0)) {
         reply(DRV_ERR_PARAM);
         return;
@@ -322,66 +284,45 @@ static void m_irqwait(int argc, char **argv, const char *line)
     k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
 }
 
-static void m_release(int argc, char **argv, const char *line)
+static void m_release(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(tpu_release(ch));
 }
 
-static void m_motor(int argc, char **argv, const char *line)
+static void m_motor(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(motor_set(ch, (int)a[1]));
 }
 
-static void m_speed(int argc, char **argv, const char *line)
+static void m_speed(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(motor_set_speed(ch, a[1]));
 }
 
-static void m_off(int argc, char **argv, const char *line)
+static void m_off(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(motor_control_off(ch));
 }
 
-static void m_gains(int argc, char **argv, const char *line)
+static void m_gains(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(motor_set_gains(ch, a[1], a[2]));
 }
 
-static void m_period(int argc, char **argv, const char *line)
+static void m_period(NUMBERS_ONLY)
 {
-    (void)argc;
-    (void)argv;
-    (void)line;
     reply(motor_control_start((unsigned)a[0]));
 }
 
-static void m_enc(int argc, char **argv, const char *line)
+static void m_enc(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     int32_t pos, spd;
     int pw;
     r = motor_position(ch, &pos);
@@ -395,12 +336,9 @@ static void m_enc(int argc, char **argv, const char *line)
         k_printf("ok %ld %ld %d\n", (long)pos, (long)spd, pw);
 }
 
-static void m_stats(int argc, char **argv, const char *line)
+static void m_stats(NUMBERS_ONLY)
 {
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     struct motor_service_stats st;
     r = motor_service_stats(&st);
     if (r < 0)
@@ -410,11 +348,8 @@ static void m_stats(int argc, char **argv, const char *line)
                  (unsigned long)st.late);
 }
 
-static void m_wait(int argc, char **argv, const char *line)
+static void m_wait(NUMBERS_ONLY)
 {
-    (void)argc;
-    (void)argv;
-    (void)line;
     if (!(a[0] >= 0)) {
         reply(DRV_ERR_PARAM);
         return;
@@ -423,21 +358,15 @@ static void m_wait(int argc, char **argv, const char *line)
     reply(DRV_OK);
 }
 
-static void m_step(int argc, char **argv, const char *line)
+static void m_step(NUMBERS_ONLY)
 {
     unsigned ch = (unsigned)a[0];
-    (void)argc;
-    (void)argv;
-    (void)line;
     step_response(ch, a[1], a[2]);
 }
 
-static void m_odo(int argc, char **argv, const char *line)
+static void m_odo(NUMBERS_ONLY)
 {
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     int32_t l = 0, rt = 0;
     r = motor_position(ODO_LEFT, &l);
     if (r >= 0)
@@ -447,12 +376,9 @@ static void m_odo(int argc, char **argv, const char *line)
     reply(r);
 }
 
-static void m_odoget(int argc, char **argv, const char *line)
+static void m_odoget(NUMBERS_ONLY)
 {
     int r;
-    (void)argc;
-    (void)argv;
-    (void)line;
     int32_t l = 0, rt = 0;
     r = motor_position(ODO_LEFT, &l);
     if (r >= 0)
@@ -465,11 +391,8 @@ static void m_odoget(int argc, char **argv, const char *line)
     }
 }
 
-static void m_cpuload(int argc, char **argv, const char *line)
+static void m_cpuload(NUMBERS_ONLY)
 {
-    (void)argc;
-    (void)argv;
-    (void)line;
     if (!(a[0] > 0)) {
         reply(DRV_ERR_PARAM);
         return;
@@ -477,11 +400,8 @@ static void m_cpuload(int argc, char **argv, const char *line)
     cpu_load(a[0]);
 }
 
-static void m_time(int argc, char **argv, const char *line)
+static void m_time(NUMBERS_ONLY)
 {
-    (void)argc;
-    (void)argv;
-    (void)line;
     k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
 }
 

@@ -5,3 +5,4 @@
 pdl_bench_TICK_HZ := 1024
 # Its main starts the board itself (board_start ... k_start).
 pdl_bench_BOOT := self
+# Its tests: suite pdl-target (apps/pdl_demo/app.mk).

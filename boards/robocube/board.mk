@@ -1,11 +1,10 @@
 # The RoboCube board (MC68332 / CPU32): how every firmware image is compiled
 # and linked (flags, linker script), the startup and base objects every image
 # links, the kernel's board support (BOARD_KERNEL_SRCS, compiled with the
-# kernel at each image's tick rate), the fault test images and the
-# firmware-boot suite. The images themselves (apps/NAME/), `make firmware`
-# and `make run` are in apps/apps.mk.
-#
-#   make check-firmware-boot            boot and fault tests on the emulator
+# kernel at each image's tick rate) and the fault test images. The images
+# themselves (apps/NAME/), `make firmware` and `make run` are in apps/apps.mk;
+# the firmware-boot suite, which boots table1 and the fault images, is
+# declared beside its image in apps/table1/app.mk.
 
 FW_BUILD     := $(BUILD)/firmware
 # The image of firmware app NAME (apps/NAME/, built by apps/apps.mk).
@@ -55,11 +54,6 @@ FW_BASE_OBJS := $(patsubst %,$(FW_BUILD)/obj/%.o,$(FW_BASE_SRCS))
 FW_FAULT_KINDS := unmapped flashwrite illegal zerodivide
 FW_FAULT_ELFS  := $(patsubst %,$(FW_BUILD)/tests/fault-%.elf,$(FW_FAULT_KINDS))
 
-CHECKS += firmware-boot
-
-.PHONY: firmware-tests check-firmware-boot
-firmware-tests: $(call app_elf,table1) $(FW_FAULT_ELFS)
-
 $(CPU32_RT) $(FW_LIBC_LIBS):
 	@$(SETUP) m68k
 
@@ -88,9 +82,3 @@ $(FW_BUILD)/tests/fault-%.elf: $(FW_BUILD)/tests/fault-%.o $(FW_BASE_OBJS) $(FW_
 FW_DEPS := $(shell find $(FW_BUILD) -name '*.d' 2>/dev/null)
 $(FW_DEPS): ;
 -include $(FW_DEPS)
-
-check-firmware-boot:
-	@$(SETUP) base m68k qemu
-	@$(MAKE) --no-print-directory firmware-tests
-	@BSCHED_QEMU=$(QEMU_M68K) FW_DIR=$(FW_BUILD) FW_ELF=$(call app_elf,table1) FW_ICOUNT=$(FW_ICOUNT) CROSS_PREFIX=m68k-linux-gnu- \
-	    ci/pytest-suite firmware-boot kernel/tests/target

@@ -27,6 +27,10 @@ import re
 import subprocess
 import sys
 
+# The one reader of tools.txt, beside this script (the script's folder is the
+# first entry of the import path when it is run, as make proof-report does).
+import tools_check
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 GOAL_LINE = re.compile(r"^\[wp\] \[(?P<prover>[^\]]+)\] Goal (?P<goal>\S+)(?: : (?P<status>\w+(?: \w+)?)(?P<rest>.*))?$")
 STEPS = re.compile(r"\((\d+)\)")
@@ -150,8 +154,6 @@ def mutants_section(build):
 
 
 def tools_section(manifest):
-    sys.path.insert(0, HERE)
-    import tools_check  # the one reader of tools.txt
     rows = []
     for name, want, command in tools_check.manifest(manifest):
         have = tools_check.installed(command)

@@ -190,6 +190,9 @@ static void fig7_count_down(struct bsched_fig7 *r, uint32_t count)
     }
 }
 
+/* The first requires and the null and bad_state behaviors are
+ * bsched_fig7_start's again, as bsched.c's contracts repeat theirs: an ACSL
+ * contract belongs to one function, ACSL has no behavior two contracts share. */
 /*@ requires valid: r == \null || \valid(r);
     requires valid_plan: plan == \null || \valid_read(plan);
     requires separated: r != \null && plan != \null ==> \separated(r, plan);

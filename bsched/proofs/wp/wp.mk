@@ -124,6 +124,18 @@ wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(if $(wp_session_on),script$(wp_co
 	$(if $(wp_session_on),-wp-session $(WP_OUT)/session) $(WP_SEL_$(1)) -wp-report-json $(WP_OUT)/wp-$(1).json \
 	$(WP_FILE_$(1)) > $(WP_OUT)/wp-$(1).log 2>&1
 
+# The shell steps of every run of WP_RUNS side by side (one Frama-C process each),
+# for make prove and make wp-replay: the logs joined in WP_OUT/wp.log, the JSON
+# reports merged in WP_OUT/wp.json; leaves rc (0, or the status of what failed)
+# and secs (the wall time) to the gate that follows.
+wp_run_all = start=$$(date +%s); rc=0; pids=; \
+	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(WP_PROVERS)) & pids="$$pids $$!";) \
+	for pid in $$pids; do wait $$pid || rc=$$?; done; \
+	cat $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).log) > $(WP_OUT)/wp.log; \
+	python3 bsched/proofs/wp/wp_report.py --merge $(WP_OUT)/wp.json \
+	    $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).json) || rc=1; \
+	secs=$$(( $$(date +%s) - start ))
+
 # Runs WP, then gates on the report: any goal not proven, fewer than
 # WP_MIN_GOALS goals, or an axiom in the spec fails the target.
 prove:
@@ -133,13 +145,7 @@ prove:
 	@$(if $(wp_session_on),python3 bsched/proofs/wp/wp_session.py install $(WP_SESSION_TSV) $(WP_OUT)/session \
 	    --steps $(WP_STEPS) --steps-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT),rm -rf $(WP_OUT)/session)
 	@rm -rf $(WP_OUT)/cache && mkdir -p $(WP_OUT)/cache
-	@start=$$(date +%s); rc=0; pids=; \
-	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(WP_PROVERS)) & pids="$$pids $$!";) \
-	for pid in $$pids; do wait $$pid || rc=$$?; done; \
-	cat $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).log) > $(WP_OUT)/wp.log; \
-	python3 bsched/proofs/wp/wp_report.py --merge $(WP_OUT)/wp.json \
-	    $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).json) || rc=1; \
-	secs=$$(( $$(date +%s) - start )); \
+	@$(wp_run_all); \
 	grep -E "^\[(kernel|wp)\].*(Warning|Error|error)" $(WP_OUT)/wp.log | grep -v "pedantic-assigns" | head -20; \
 	if [ $$rc -ne 0 ]; then tail -20 $(WP_OUT)/wp.log; echo "prove: frama-c exited $$rc"; exit 1; fi; \
 	python3 bsched/proofs/wp/wp_report.py $(WP_OUT)/wp.log $(WP_OUT)/wp.json $(WP_OUT)/report.json \
@@ -171,13 +177,7 @@ wp-replay-run: WP_SESSION := 0
 wp-replay-run:
 	@rm -rf $(WP_OUT) && mkdir -p $(WP_OUT)
 	@[ -d $(WP_CACHE_ENTRIES) ] || { echo "wp-replay: no committed cache in $(WP_CACHE_DIR): run make prove"; exit 1; }
-	@start=$$(date +%s); rc=0; pids=; \
-	$(foreach r,$(WP_RUNS),$(call wp_run,$(r),$(WP_PROVERS)) & pids="$$pids $$!";) \
-	for pid in $$pids; do wait $$pid || rc=$$?; done; \
-	cat $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).log) > $(WP_OUT)/wp.log; \
-	python3 bsched/proofs/wp/wp_report.py --merge $(WP_OUT)/wp.json \
-	    $(foreach r,$(WP_RUNS),$(WP_OUT)/wp-$(r).json) || rc=1; \
-	secs=$$(( $$(date +%s) - start )); \
+	@$(wp_run_all); \
 	if [ $$rc -ne 0 ]; then tail -20 $(WP_OUT)/wp.log; echo "wp-replay: frama-c exited $$rc"; exit 1; fi; \
 	python3 bsched/proofs/wp/wp_report.py $(WP_OUT)/wp.log $(WP_OUT)/wp.json $(WP_OUT)/report.json \
 	    --min-goals $(WP_MIN_GOALS) --spec $(WP_SPEC) --seconds $$secs > $(WP_OUT)/gate.log; gate=$$?; \

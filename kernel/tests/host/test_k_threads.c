@@ -748,16 +748,24 @@ static void *cond_signaller(void *arg)
     return NULL;
 }
 
-static void test_cond_signal_wakes_most_urgent(void **state)
+/* Waiters A (priority 8) and B (12) on cnd, then the signaller: one signal
+ * (signaller_arg NULL) or a broadcast; returns when every thread is dead or
+ * blocked forever (k_start on the host). */
+static void run_cond_waiters(void *signaller_arg)
 {
-    (void)state;
     cond_ready = 0;
     k_mutex_init(&mtx);
     k_cond_init(&cnd);
     spawn(0, "A", cond_waiter, "A", 8);
     spawn(1, "B", cond_waiter, "B", 12);
-    spawn(2, "signaller", cond_signaller, NULL, 10);
+    spawn(2, "signaller", cond_signaller, signaller_arg, 10);
     k_start();
+}
+
+static void test_cond_signal_wakes_most_urgent(void **state)
+{
+    (void)state;
+    run_cond_waiters(NULL);
     /* B (more urgent) is woken; it needs the mutex, so it runs when the
      * signaller unlocks; A waits on. */
     assert_string_equal(trace, "BAsub");
@@ -770,13 +778,7 @@ static void test_cond_signal_wakes_most_urgent(void **state)
 static void test_cond_broadcast_wakes_all(void **state)
 {
     (void)state;
-    cond_ready = 0;
-    k_mutex_init(&mtx);
-    k_cond_init(&cnd);
-    spawn(0, "A", cond_waiter, "A", 8);
-    spawn(1, "B", cond_waiter, "B", 12);
-    spawn(2, "signaller", cond_signaller, "all", 10);
-    k_start();
+    run_cond_waiters("all");
     assert_string_equal(trace, "BAsuba");
     assert_int_equal(rc[0], K_OK);
     assert_int_equal(rc[1], K_OK);

@@ -20,9 +20,12 @@ translation block, no block chaining), then walks the PC sequence:
 K_BOARD=stm32f405 measures the same paths on the ARMv7-M port (qemu-system-arm
 -M netduinoplus2; the tick span starts at the SysTick handler): see BOARDS.
 
-Usage: kmeasure.py [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
-$BSCHED_QEMU). Prints the figures; exit 1 if a path was never seen.
+Usage: kmeasure.py [--json] [ELF] [QEMU]   (defaults: build/kernel/target/ktest-measure.elf,
+$BSCHED_QEMU). Prints the figures (--json: every span's count, as JSON); exit 1
+if a path was never seen.
 """
+import argparse
+import json
 import os
 import statistics
 import sys
@@ -71,9 +74,16 @@ def summary(name, counts):
 
 
 def main():
-    elf = Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "build/kernel/target/ktest-measure.elf"
-    qemu = sys.argv[2] if len(sys.argv) > 2 else os.environ.get("BSCHED_QEMU", "")
-    r = measure(qemu, elf)
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("elf", nargs="?", type=Path, default=ROOT / "build/kernel/target/ktest-measure.elf")
+    ap.add_argument("qemu", nargs="?", default=os.environ.get("BSCHED_QEMU", ""))
+    ap.add_argument("--json", action="store_true",
+                    help="print the counts of every span as one JSON object (bench/bench_cpus.py reads it)")
+    a = ap.parse_args()
+    r = measure(a.qemu, a.elf)
+    if a.json:
+        print(json.dumps({k: r[k] for k in ("tick_switch", "sem_handoff", "traced")}))
+        return 0 if r["tick_switch"] and r["sem_handoff"] else 1
     print(f"traced {r['traced']} instructions")
     print(summary("tick interrupt with a context switch", r["tick_switch"]))
     print(summary("semaphore hand-off between two threads", r["sem_handoff"]))

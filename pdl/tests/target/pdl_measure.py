@@ -13,8 +13,11 @@ deterministic instruction count (-icount shift=8,sleep=off):
   footprint(map)            the runtime's flash (.text/.rodata) and RAM (.data/.bss)
                             from the linker map
 
-Usage: pdl_measure.py [ELF [QEMU]]  prints everything (make pdl-bench).
+Usage: pdl_measure.py [--cycles-json] [ELF [QEMU]]  prints everything (make pdl-bench);
+--cycles-json only the traced sweep's cycles, as JSON (bench/bench_cpus.py).
 """
+import argparse
+import json
 import os
 import re
 import statistics
@@ -160,9 +163,19 @@ def report(console, summary, sizes):
 
 
 def main():
-    elf = Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "build/firmware/pdl_bench/pdl_bench.elf"
-    qemu = sys.argv[2] if len(sys.argv) > 2 else os.environ.get("BSCHED_QEMU",
-                                                                  str(ROOT / "build/emu/qemu-system-m68k"))
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("elf", nargs="?", type=Path, default=ROOT / "build/firmware/pdl_bench/pdl_bench.elf")
+    ap.add_argument("qemu", nargs="?",
+                    default=os.environ.get("BSCHED_QEMU", str(ROOT / "build/emu/qemu-system-m68k")))
+    ap.add_argument("--cycles-json", action="store_true",
+                    help="only the traced sweep: every clean cycle's counts as JSON "
+                         "(bench/bench_cpus.py reads it)")
+    a = ap.parse_args()
+    qemu, elf = a.qemu, a.elf
+    if a.cycles_json:
+        cycles, _ = cycle_costs(qemu, elf)
+        print(json.dumps(cycles))
+        return 0 if cycles else 1
     console = run_bench(qemu, elf)
     cycles, _ = cycle_costs(qemu, elf)
     text = report(console, summarise(cycles), footprint(Path(elf).with_suffix(".map")))

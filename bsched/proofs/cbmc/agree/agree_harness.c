@@ -38,11 +38,8 @@ void harness(void)
     int32_t rc7;
     int32_t rc;
 
-    proof_nondet_set(&set);
-    t = nondet_uint32();
-    __CPROVER_assume((t >> set.maxpv) == 0u); /* t < 2^maxpv */
+    t = proof_plan_at_any_cycle(&s, &set);
     next = (t + 1u) & proof_mask(set.maxpv);
-    proof_plan_at(&s, &set, t);
 
     r.cycle = (int32_t)t;
     r.ran_count = nondet_uint16();

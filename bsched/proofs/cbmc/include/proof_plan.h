@@ -78,6 +78,18 @@ static void proof_plan_at(struct bsched *s, const struct proof_set *set, uint32_
     s->minpv = (uint8_t)minpv;
 }
 
+/* An arbitrary set (*set) and an arbitrary minor cycle t < 2^maxpv of it,
+ * *s := the plan at t; returns t. The start of the step harnesses (step, agree). */
+static uint32_t proof_plan_at_any_cycle(struct bsched *s, struct proof_set *set)
+{
+    uint32_t t;
+    proof_nondet_set(set);
+    t = nondet_uint32();
+    __CPROVER_assume((t >> set->maxpv) == 0u); /* t < 2^maxpv */
+    proof_plan_at(s, set, t);
+    return t;
+}
+
 /* After a step from `before`: is *s the plan of the same set at cycle next?
  * (Only the cycle and the reversed counter move; pv, order and offsets are
  * checked by the caller, entry by entry.) */

@@ -45,12 +45,8 @@ void harness(void)
     uint32_t i;
     int32_t rc;
 
-    proof_nondet_set(&set);
-
-    t = nondet_uint32();
-    __CPROVER_assume((t >> set.maxpv) == 0u); /* t < 2^maxpv */
+    t = proof_plan_at_any_cycle(&s, &set);
     next = (t + 1u) & proof_mask(set.maxpv);
-    proof_plan_at(&s, &set, t);
 
     for (i = 0u; i < PROOF_N; i++) {
         due[i] = i < set.n ? (uint32_t)proof_due_at(s.offset[i], set.pv[i], t) : 0u;
