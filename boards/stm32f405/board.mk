@@ -155,9 +155,9 @@ $(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/
     $(STM32_BUILD)/tests/fault-$(k).elf,boards/stm32f405/tests/fault_image.c,\
     -DFAULT_KIND=$(call stm32_fault_index,$(k)),$(STM32_TEST_BASE))))
 
-# The firmware on this board: table1 and the shell via make run, the fault
-# reports, PDL (its ports, pdl_hello, pdl_bench), make run's refusals
-# (boards/stm32f405/tests).
+# The firmware on this board: table1 (apps/table1/tests, as on the RoboCube)
+# and the shell via make run, the fault reports, PDL (its ports, pdl_hello,
+# pdl_bench), make run's refusals (boards/stm32f405/tests).
 CHECKS += stm32f405-firmware
 .PHONY: check-stm32f405-firmware
 check-stm32f405-firmware:
@@ -165,8 +165,8 @@ check-stm32f405-firmware:
 	@$(MAKE) --no-print-directory $(call stm32_elf,table1) $(call stm32_elf,pdl_hello) $(call stm32_elf,pdl_bench) \
 	    $(call stm32_elf,shell) \
 	    $(STM32_FAULT_ELFS) $(STM32_PDL_TEST_ELF)
-	@STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
-	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests
+	@K_BOARD=stm32f405 STM32_BUILD=$(STM32_BUILD) QEMU_ARM=$$(command -v $(QEMU_ARM)) STM32_ICOUNT=$(STM32_ICOUNT) \
+	    ci/pytest-suite stm32f405-firmware boards/stm32f405/tests apps/table1/tests
 
 # The PDL target test image (boards/stm32f405/tests/pdl_ports.c), started by
 # drivers/board_main.c like any ordinary program, at the kernel's 1024 Hz.
@@ -183,14 +183,14 @@ STM32_BENCH_SRCS := boards/stm32f405/bench_armv7m.c bsched/proofs/ref/bsched_fig
 STM32_BENCH_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=%,$(STM32_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
                     -I$(ROOT)/bsched/proofs/ref -I$(ROOT)/bench -DBENCH_CYCLES=$(BENCH_CYCLES)u
 STM32_BENCH_OBJS := $(patsubst %,$(STM32_BENCH_DIR)/%.o,$(STM32_BENCH_SRCS) $(STM32_BASE_SRCS))
-$(STM32_BENCH_DIR)/%.c.o: %.c
+$(STM32_BENCH_DIR)/%.c.o: %.c bench/bench_image.h bench/bench_core.h
 	@mkdir -p $(@D)
-	$(ARM_CC) $(STM32_BENCH_FLAGS) -c -o $@ $<
+	$(call quiet,CC,$<)$(ARM_CC) $(STM32_BENCH_FLAGS) -c -o $@ $<
 $(STM32_BENCH_DIR)/%.S.o: %.S
 	@mkdir -p $(@D)
-	$(ARM_CC) $(STM32_ARCH_FLAGS) -g -c -o $@ $<
+	$(call quiet,CC,$<)$(ARM_CC) $(STM32_ARCH_FLAGS) -g -c -o $@ $<
 $(STM32_BENCH_ELF): $(STM32_BENCH_OBJS) $(STM32_LDSCRIPT)
-	$(ARM_CC) $(STM32_LDFLAGS) -o $@ $(STM32_BENCH_OBJS) -lc -lgcc
+	$(call quiet,LD,$@)$(ARM_CC) $(STM32_LDFLAGS) -o $@ $(STM32_BENCH_OBJS) -lc -lgcc
 
 # make bench-cpus: the one table of both CPUs side by side (bench_cpus.py),
 # written to build/bench/cpus.txt; make bench makes it too. Long (several

@@ -1,5 +1,6 @@
 """The firmware on the stm32f405 board (qemu-system-arm -M netduinoplus2):
-table1 and the shell through `make run`, the fault reports of the ARMv7-M
+table1 in virtual time (its Table 2 through `make run`: apps/table1/tests), the
+shell through `make run`, the fault reports of the ARMv7-M
 port, PDL on the board's ports, and make run's refusals (an unknown board, an
 image that needs the RoboCube).
 
@@ -17,7 +18,6 @@ from pathlib import Path
 import pytest
 
 import robocube_emu
-from test_firmware_boot import check_table1_text
 
 ROOT = Path(__file__).resolve().parents[3]
 BUILD = Path(os.environ.get("STM32_BUILD", ROOT / "build" / "stm32f405"))
@@ -52,19 +52,6 @@ def symbol(elf, name):
         if len(parts) == 3 and parts[2] == name:
             return int(parts[0], 16)
     raise AssertionError(f"symbol {name} not in {elf}")
-
-
-def test_make_run_table1_prints_table2():
-    """make run BOARD=stm32f405 (APP=table1 is this board's default): the
-    unchanged bsched.c in the kernel's B-scheduler thread prints the paper's
-    Table 2, as on the RoboCube."""
-    r = make("run", "BOARD=stm32f405", "RUN_SECONDS=5")
-    assert r.returncode == 0, r.stderr
-    text = r.stdout.replace("\r\n", "\n")
-    assert "STM32F405 firmware: B-scheduler, Table 1 process set" in text
-    assert "cpu Cortex-M4 (STM32F405) 168000000 Hz" in text
-    check_table1_text(text)
-    assert "qemu-system-arm -M netduinoplus2" in r.stderr   # make run's banner
 
 
 def test_table1_runs_in_virtual_time():

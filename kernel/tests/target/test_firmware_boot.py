@@ -30,18 +30,6 @@ FAULT_IMAGES = {kind: FW_DIR / "tests" / f"fault-{kind}.elf"
 
 FLASH_BASE, FLASH_END = 0xE00000, 0xF00000
 
-# The paper's Table 1 process set and Table 2 (one major cycle).
-NAMES = ["p1.1", "p1.2", "p1.3", "p2.1", "p2.2", "p3.1", "p4.1", "p4.2", "p4.3"]
-PV = [1, 1, 1, 2, 2, 3, 4, 4, 4]
-TABLE2 = [
-    "p1.1 p1.3 p3.1", "p1.2 p2.1", "p1.1 p1.3 p4.3", "p1.2 p2.2",
-    "p1.1 p1.3 p4.1", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
-    "p1.1 p1.3 p3.1", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
-    "p1.1 p1.3 p4.2", "p1.2 p2.1", "p1.1 p1.3", "p1.2 p2.2",
-]
-MAJOR_CYCLES = 4          # TABLE1_MAJOR_CYCLES in apps/table1/table1.c
-TICK_HZ = 128             # table1_TICK_HZ in apps/table1/app.mk (the image's K_TICK_HZ)
-B_SCHED_PRIORITY = 27     # K_PRIO_APP_MAX in kernel/include/k_config.h
 BOOT_TIME_LIMIT = 20.0    # seconds of wall time for the whole Table 1 run
 FAULT_TIME_LIMIT = 10.0
 
@@ -129,57 +117,6 @@ def symbol(elf, name):
 
 
 # ---------------------------------------------------------------- the default image
-
-def test_table1_prints_table2_and_periods(board_factory):
-    board = board_factory(FIRMWARE)
-    board.read_until(rb"RoboCube firmware", BOOT_TIME_LIMIT)
-    banner = time.monotonic() - board.start
-    board.read_until(rb"table1 done", BOOT_TIME_LIMIT)
-    elapsed = time.monotonic() - board.start
-    text = board.text()
-    print(f"\nbanner {banner:.2f} s, Table 1 run finished {elapsed:.2f} s after qemu start")
-
-    assert "RoboCube firmware: B-scheduler, Table 1 process set" in text
-    check_table1_text(text)
-
-
-def check_table1_text(text):
-    """What table1 prints on any board (boards/stm32f405/tests use it too):
-    Table 2 row by row, the measured periods, the kernel's accounting."""
-    assert f"tick {TICK_HZ} Hz" in text
-    # The cycles run in the nanokernel's B-scheduler thread, one per kernel tick.
-    assert (f"nanokernel: tick {TICK_HZ} Hz, B-scheduler thread at priority "
-            f"{B_SCHED_PRIORITY}, 1 tick per minor cycle") in text, text
-    cycles = re.findall(r"^cycle (\d+):((?: p\d\.\d)*)$", text, re.M)
-    assert len(cycles) == 16 * MAJOR_CYCLES, text
-    for i, (t, names) in enumerate(cycles):
-        assert int(t) == i % 16, f"line {i}: cycle {t}"
-        assert names.strip() == TABLE2[i % 16], f"minor cycle {i}: {names!r} != Table 2 row {i % 16}"
-
-    m = re.search(r"^ran (\d+) minor cycles in (\d+) ticks, (\d+) ticks missed$", text, re.M)
-    assert m, text
-    assert int(m.group(1)) == 16 * MAJOR_CYCLES
-    assert int(m.group(2)) == 16 * MAJOR_CYCLES, "one minor cycle per PIT tick"
-    assert int(m.group(3)) == 0
-
-    periods = dict(re.findall(r"^period (p\d\.\d): (.*)$", text, re.M))
-    assert sorted(periods) == sorted(NAMES)
-    for name, pv in zip(NAMES, PV):
-        runs = 16 * MAJOR_CYCLES // 2 ** pv
-        assert periods[name] == f"{2 ** pv} ticks ({runs} runs)", (name, periods[name])
-
-    # The kernel's own accounting of the B-scheduler thread agrees: every
-    # cycle ran, none overran (no report line either), no console byte lost.
-    m = re.search(r"^bsched thread: (\d+) minor cycles from tick (\d+), overruns: (\d+), "
-                  r"longest cycle (\d+) ticks, console bytes dropped: (\d+)$", text, re.M)
-    assert m, text
-    assert int(m.group(1)) == 16 * MAJOR_CYCLES
-    assert int(m.group(3)) == 0, "overruns"
-    assert int(m.group(4)) == 0, "a minor cycle crossed a tick"
-    assert int(m.group(5)) == 0, "console bytes dropped"
-    assert "bsched: overrun" not in text and "still running" not in text
-    assert "failed" not in text and "EXCEPTION" not in text
-
 
 def test_led_blinks_after_table1(board_factory, tmp_path):
     """After the run a kernel thread toggles the port E LED every 64 ticks
