@@ -169,6 +169,26 @@ def test_shell_burst_larger_than_the_ring_loses_nothing():
     assert m and int(m.group(2)) >= 1, answers[81]
 
 
+def test_make_run_with_a_reader_that_goes_away_leaves_no_emulator():
+    """`make run BOARD=stm32f405 | head`, piped input: when the reader goes
+    away, the console gate stops the board (an emulator once ran on, orphaned,
+    for 45 minutes at most of a core)."""
+    elf = str(BUILD / "table1" / "table1.elf")
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MAKELEVEL")}
+    r = subprocess.run(["bash", "-c", "make --no-print-directory run BOARD=stm32f405 APP=table1 "
+                        "RUN_SECONDS=60 </dev/null | head -c 100"], cwd=ROOT, env=env,
+                       capture_output=True, text=True, timeout=120)
+    assert "STM32F405 firmware" in r.stdout, r.stdout + r.stderr
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline:
+        left = subprocess.run(["pgrep", "-f", f"qemu-system-arm.*{elf}"], capture_output=True,
+                              text=True).stdout.split()
+        if not left:
+            break
+        time.sleep(0.2)
+    assert not left, f"emulators left running: {left}"
+
+
 def test_make_run_refuses_an_unknown_board():
     r = make("run", "BOARD=pdp11", "APP=table1")
     assert r.returncode == 2

@@ -18,6 +18,8 @@ import subprocess
 import sys
 import threading
 
+from .launch import die_with_parent
+
 CHUNK = 4096
 
 
@@ -44,7 +46,10 @@ def main(argv):
     if not argv:
         print("usage: python -m robocube_emu.console_gate CMD [ARG...]", file=sys.stderr)
         return 2
-    child = subprocess.Popen(argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, bufsize=0)
+    # The emulator dies with this process (however it ends), so that no
+    # emulator is left running when a reader goes away or a timeout kills it.
+    child = subprocess.Popen(argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE, bufsize=0,
+                             preexec_fn=die_with_parent)
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda s, f: child.send_signal(s))
     gate = threading.Event()
@@ -54,7 +59,12 @@ def main(argv):
         if not data:
             break
         gate.set()
-        os.write(1, data)
+        try:
+            os.write(1, data)
+        except BrokenPipeError:     # the reader is gone (`make run | head`): stop the board
+            child.terminate()
+            child.wait()
+            return 0
     return child.wait()
 
 
