@@ -66,6 +66,9 @@ HOST_CFLAGS ?= -std=c99 -O2 -g -Wall -Wextra -Wpedantic -Wconversion -Wshadow -W
 ALL     :=
 CHECKS  :=
 PROOF_CHECKS :=
+# The suites that run the emulated boards (QEMU): each fragment names its own beside
+# its CHECKS line; make check-stress runs them again and again beside CPU hogs.
+EMU_CHECKS :=
 
 # Every part's fragment, in the order of the layers, lowest first, so that a
 # fragment only reads variables of the fragments above it (a variable read in a
@@ -95,8 +98,18 @@ include bench/bench.mk
 # A board beside the RoboCube (BOARD=stm32f405): it builds the apps above.
 include boards/stm32f405/board.mk
 
-.PHONY: all check setup run clean
+.PHONY: all check setup run clean check-stress
 all: $(ALL)
+
+# make check-stress: every emulator suite STRESS_ROUNDS times, one CPU hog per core
+# beside them (ci/stress-checks); STRESS_SUITES picks some.
+STRESS_ROUNDS ?= 20
+STRESS_SUITES ?= $(EMU_CHECKS)
+check-stress:
+	$(call check_whole_number,check-stress,STRESS_ROUNDS,1,1000,make check-stress STRESS_ROUNDS=N [STRESS_SUITES="SUITE..."])
+	$(if $(filter-out $(CHECKS),$(STRESS_SUITES)),$(error check-stress: not a suite: $(filter-out $(CHECKS),$(STRESS_SUITES)) (the suites are make check's)))
+	@$(SETUP)
+	@ci/stress-checks $(STRESS_ROUNDS) $(STRESS_SUITES)
 
 setup:
 	$(SETUP)

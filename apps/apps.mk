@@ -244,6 +244,7 @@ new-app:
 	echo "created apps/$$name/ (main.c from $(NEW_APP_TEMPLATE)): make run APP=$$name [WORLD=default: in the arena] [HOST=1: on the host, in the arena]"
 
 CHECKS += new-app
+EMU_CHECKS += new-app
 .PHONY: check-new-app
 check-new-app:
 	@$(SETUP) base m68k qemu

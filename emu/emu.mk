@@ -8,6 +8,7 @@ QEMU_M68K := $(BUILD)/emu/qemu-system-m68k
 export BSCHED_QEMU := $(QEMU_M68K)
 
 CHECKS += emu-core
+EMU_CHECKS += emu-core
 
 .PHONY: emu check-emu-core
 emu:

@@ -1,6 +1,7 @@
 # emu I/O side (TPU, PCF8584 I2C + I/O board, motors, fast binary outputs):
 # qtest/QMP device tests against the robocube machine (see emu/IO.md).
 CHECKS += emu-io
+EMU_CHECKS += emu-io
 
 .PHONY: check-emu-io
 check-emu-io:

@@ -57,6 +57,7 @@ K_TEST_ELFS  := $(patsubst %,$(K_BUILD)/target/ktest-%.elf,$(K_TEST_MODES))
 k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10 11 12 13,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
 
 CHECKS += kernel-target
+EMU_CHECKS += kernel-target
 
 .PHONY: kernel-target check-kernel-target kernel-size
 kernel-target: $(K_TEST_ELFS)

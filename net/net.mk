@@ -319,6 +319,7 @@ $(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/
 	$(if $(filter 1,$(V)),$(CROSS_SIZE) $@,@true)
 
 CHECKS += net-auth net-auth-target
+EMU_CHECKS += net-auth-target
 HOST_UNIT_CHECKS += net-auth
 .PHONY: check-net-auth check-net-auth-target net-auth-bench
 check-net-auth:

@@ -22,6 +22,7 @@ ecosystem_RUN_DEPS = eco-host
 ecosystem_BOOT := self
 
 CHECKS += eco
+EMU_CHECKS += eco
 ALL    += $(ECO_HOST_LIB)
 
 .PHONY: eco-host check-eco eco-survival

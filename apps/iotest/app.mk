@@ -10,6 +10,7 @@ iotest_BOOT := self
 # Its tests (suite drivers-target): drivers/tests/target/ boots it on
 # qemu -M robocube and drives the I/O drivers over the console and QMP.
 CHECKS += drivers-target
+EMU_CHECKS += drivers-target
 .PHONY: check-drivers-target
 check-drivers-target:
 	@$(SETUP) base m68k qemu

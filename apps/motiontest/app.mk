@@ -7,6 +7,7 @@ motiontest_BOOT := self
 # Its tests (suite motion-target): drivers/tests/target_motion/ boots it on the
 # emulated board and checks the TPU, motors and odometry over QMP.
 CHECKS += motion-target
+EMU_CHECKS += motion-target
 .PHONY: check-motion-target
 check-motion-target:
 	@$(SETUP) base m68k qemu

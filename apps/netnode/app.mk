@@ -18,6 +18,7 @@ netnode_RUNNER = $(PYTHON) $(ROOT)/tools/netpeer/soak.py --elf $(call app_elf,ne
 # faults; byte errors with FEC; 8 host peers and a board sending at once). The
 # long runs on this image (make net-soak, net-interop, net-bench) are in net/net.mk.
 CHECKS += net-target net-soak
+EMU_CHECKS += net-target net-soak
 .PHONY: check-net-target check-net-soak
 check-net-target:
 	@$(SETUP) base m68k qemu

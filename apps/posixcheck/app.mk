@@ -2,6 +2,7 @@
 # and its error paths, judged by apps/posixcheck/tests/; apps/posixmeasure
 # counts the instructions of the POSIX calls against the k_ calls they stand on.
 CHECKS += posix
+EMU_CHECKS += posix
 .PHONY: check-posix
 check-posix:
 	@$(SETUP) base m68k qemu

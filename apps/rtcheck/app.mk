@@ -13,6 +13,7 @@ $(RTCHECK_HOST): apps/rtcheck/tests/host_main.c $(wildcard apps/rtcheck/rt_*.[ch
 	    apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c -lm
 
 CHECKS += rtcheck
+EMU_CHECKS += rtcheck
 .PHONY: check-rtcheck
 check-rtcheck:
 	@$(SETUP) base m68k qemu

@@ -10,6 +10,7 @@ shell_QUIT   := the shell's exit ends the run
 # Target tests: the shell on the emulated board, every command checked over
 # QMP against the board model, plus `make run APP=shell` with piped stdin.
 CHECKS += shell-target
+EMU_CHECKS += shell-target
 .PHONY: check-shell-target
 check-shell-target:
 	@$(SETUP) base m68k qemu

@@ -12,6 +12,7 @@ table1_BOOT := self
 # FW_FAULT_ELFS), checks every image's load address and compares kprintf with
 # C's printf on the host.
 CHECKS += firmware-boot
+EMU_CHECKS += firmware-boot
 .PHONY: firmware-tests check-firmware-boot
 firmware-tests: $(call app_elf,table1) $(FW_FAULT_ELFS)
 check-firmware-boot:

@@ -140,6 +140,7 @@ run-stm32f405:
 # The kernel target suite (kernel/tests/target-kernel) on this board: the same
 # images and judgements, K_BOARD=stm32f405 picks the machine and -icount.
 CHECKS += stm32f405-kernel
+EMU_CHECKS += stm32f405-kernel
 .PHONY: check-stm32f405-kernel
 check-stm32f405-kernel:
 	@$(SETUP) base arm
@@ -159,6 +160,7 @@ $(foreach k,$(STM32_FAULT_KINDS),$(eval $(call stm32_image,$(STM32_BUILD)/tests/
 # and the shell via make run, the fault reports, PDL (its ports, pdl_hello,
 # pdl_bench), make run's refusals (boards/stm32f405/tests).
 CHECKS += stm32f405-firmware
+EMU_CHECKS += stm32f405-firmware
 .PHONY: check-stm32f405-firmware
 check-stm32f405-firmware:
 	@$(SETUP) base arm

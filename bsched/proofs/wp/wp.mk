@@ -3,9 +3,8 @@
 #   make check-wp              the same as a check suite
 #   make check-wp-negative     the mutant (-DBSCHED_MUTANT_NO_REVERSE) must fail
 #   make wp-session            race every goal and record its prover (session.tsv)
-#   make wp-replay             every goal re-checked from the committed WP cache
-#                              (bsched/proofs/wp/cache/), no prover run (~500 s)
-#   make check-wp-replay       the same as a check suite (make check runs it)
+#   make check-wp-trust        a forged cache, a deleted goal, a weakened contract
+#                              each fail the proof suite (on copies of reverse_bits)
 # Deterministic: fixed prover list, timeout, memory limit (why3.conf) and -wp-par.
 
 WP_DIR      := $(BUILD)/wp
@@ -44,26 +43,20 @@ WP_MACHDEP_FLAGS ?=
 # The directory name carries the configuration version (why3-config.sh).
 export WHY3CONFIG := $(BSCHED_TOOLS)/why3-v5/why3.conf
 
+# -wp-cache none: every result comes from a prover run now, whatever FRAMAC_WP_CACHE
+# says in the environment (a cached result is a file anyone can write).
 WP_FLAGS = -cpp-extra-args="-I$(ROOT)/bsched $(WP_DEFINES)" \
 	-wp -wp-rte -wp-timeout $(WP_TIMEOUT) \
 	$(if $(filter-out 0,$(WP_STEPS)),-wp-steps $(WP_STEPS)) \
-	-wp-verbose 1 $(WP_CACHE_FLAGS) $(WP_MACHDEP_FLAGS)
+	-wp-verbose 1 -wp-cache none $(WP_MACHDEP_FLAGS)
 
-# The WP cache (Frama-C's -wp-cache). make prove runs every prover (mode rebuild:
-# no cached result is ever used) and records each prover's result under
-# WP_OUT/cache/, keyed by the digest of the task as sent to the prover. A full
-# make prove that proves every goal then replaces the committed cache
-# (WP_CACHE_DIR, wp_cache.py commit) with the proofs of the current goals only.
-# make wp-replay re-generates every goal and looks each one up there (mode offline:
-# no prover ever runs); a goal whose task is not in the cache fails the replay.
-WP_CACHE_DIR    := bsched/proofs/wp/cache
-WP_CACHE_MODE   ?= rebuild
-WP_CACHE_FLAGS   = -wp-cache $(WP_CACHE_MODE) -wp-cache-dir $(WP_CACHE_ENTRIES)
-WP_CACHE_ENTRIES = $(WP_OUT)/cache
-# Only the full run of the shipping configuration refreshes the committed cache
-# (not a WP_FCT, mutant, machine-model or calibration run, and not check-wp, which
-# is a check and leaves the source tree alone).
-WP_CACHE_COMMIT ?= $(if $(WP_FCT)$(WP_DEFINES)$(WP_MACHDEP_FLAGS)$(filter-out $(WP_DIR),$(WP_OUT)),0,1)
+# What the proof proves is recorded (wp_goals.py): goals.tsv, every goal with its
+# prover, and contracts.tsv, the digest of each source's ACSL annotations. Only a full
+# run of the shipping configuration that proves every goal writes them (not a WP_FCT,
+# mutant, machine-model or calibration run, and not check-wp, which is a check and
+# leaves the source tree alone); make check holds its proof against them.
+WP_RECORD_DIR := bsched/proofs/wp
+WP_RECORD ?= $(if $(WP_FCT)$(WP_DEFINES)$(WP_MACHDEP_FLAGS)$(filter-out $(WP_DIR),$(WP_OUT)),0,1)
 
 # The full run is split over Frama-C processes: WP generates its goals in one thread,
 # so one process would leave a core idle much of the time. Part A takes the library's
@@ -110,13 +103,11 @@ WP_FILE_ref  = bsched/proofs/ref/bsched_fig7.c
 WP_SPEC     += bsched/spec/bsched_fig7.h
 WP_SOURCES  += bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/spec/bsched_fig7.h
 
-# make check re-checks every goal from the committed cache (suite wp-replay, below:
-# 509 s wall, 702 s CPU, as long as the proof, but no verdict lost to a loaded machine)
-# in place of the full proof (suite wp, 450-930 s);
-# the full proof runs in make prove and make nightly. The negative check stays.
-CHECKS += wp-negative
-PROOF_CHECKS += wp-negative
-NIGHTLY_CHECKS += wp
+# make check runs the full proof (suite wp: every goal Qed leaves goes to a prover,
+# the session's first, then the race), held against the record of goals and contracts
+# (wp_goals.py check), and the negative check.
+CHECKS += wp wp-negative
+PROOF_CHECKS += wp wp-negative
 .PHONY: prove check-wp check-wp-negative wp-calibrate wp-session nightly
 
 # $(call wp_run,RUN,PROVERS): one Frama-C process, its log and JSON report in WP_OUT.
@@ -125,7 +116,7 @@ wp_run = nice frama-c $(WP_FLAGS) -wp-prover $(if $(wp_session_on),script$(wp_co
 	$(WP_FILE_$(1)) > $(WP_OUT)/wp-$(1).log 2>&1
 
 # The shell steps of every run of WP_RUNS side by side (one Frama-C process each),
-# for make prove and make wp-replay: the logs joined in WP_OUT/wp.log, the JSON
+# for make prove: the logs joined in WP_OUT/wp.log, the JSON
 # reports merged in WP_OUT/wp.json; leaves rc (0, or the status of what failed)
 # and secs (the wall time) to the gate that follows.
 wp_run_all = start=$$(date +%s); rc=0; pids=; \
@@ -144,7 +135,6 @@ prove:
 	@mkdir -p $(WP_OUT)
 	@$(if $(wp_session_on),python3 bsched/proofs/wp/wp_session.py install $(WP_SESSION_TSV) $(WP_OUT)/session \
 	    --steps $(WP_STEPS) --steps-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT),rm -rf $(WP_OUT)/session)
-	@rm -rf $(WP_OUT)/cache && mkdir -p $(WP_OUT)/cache
 	@$(wp_run_all); \
 	grep -E "^\[(kernel|wp)\].*(Warning|Error|error)" $(WP_OUT)/wp.log | grep -v "pedantic-assigns" | head -20; \
 	if [ $$rc -ne 0 ]; then tail -20 $(WP_OUT)/wp.log; echo "prove: frama-c exited $$rc"; exit 1; fi; \
@@ -152,57 +142,21 @@ prove:
 	    --min-goals $(WP_MIN_GOALS) --spec $(WP_SPEC) --seconds $$secs \
 	    $(if $(WP_EXPECT_FAIL),--expect-fail $(WP_EXPECT_FAIL)) \
 	    $(if $(WP_KNOWN_GAPS),--known-gap $(WP_KNOWN_GAPS)) || exit 1; \
-	$(if $(filter 1,$(WP_CACHE_COMMIT)),python3 bsched/proofs/wp/wp_cache.py commit $(WP_OUT)/cache $(WP_OUT)/report.json $(WP_CACHE_DIR))
+	$(if $(filter 1,$(WP_RECORD)),python3 bsched/proofs/wp/wp_goals.py record $(WP_OUT)/report.json $(WP_RECORD_DIR) \
+	    --root $(ROOT) --spec $(WP_SOURCES))
 
-# make wp-replay: the three runs of make prove (a, b, ref) with the committed cache
-# and no prover (-wp-cache offline): WP generates every goal from the current code and
-# spec, Qed simplifies it as in make prove, and every goal Qed leaves is looked up by
-# the digest of its prover task. Gated like make prove (wp_report.py: every goal
-# proven, none Unknown, Timeout or Step limit), then wp_cache.py check: the goals are
-# exactly the goals of the proof that made the cache, and a goal without a proof in
-# the cache is named, with the advice to run make prove. Writes build/wp-replay/.
-WP_REPLAY_OUT := $(BUILD)/wp-replay
-.PHONY: wp-replay check-wp-replay
-wp-replay:
+# Suite wp-trust: what make check's proof cannot be talked into (wp_trust_check.sh, on
+# copies of the proof sources whose reverse_bits is changed): a false postcondition
+# with forged cache entries and session lines fails make prove, though the forgery
+# passes an offline replay of that cache; a deleted and a weakened postcondition fail
+# the record's check.
+CHECKS += wp-trust
+PROOF_CHECKS += wp-trust
+.PHONY: check-wp-trust
+check-wp-trust:
 	@$(SETUP) frama-c
-	@python3 bsched/proofs/tools_check.py --only frama-c,why3,z3,cvc4,cvc5
-	@$(MAKE) --no-print-directory wp-replay-run
-
-# The replay itself (no setup, no tools check: check-wp-replay does both once).
-.PHONY: wp-replay-run
-wp-replay-run: WP_OUT := $(WP_REPLAY_OUT)
-wp-replay-run: WP_CACHE_MODE := offline
-wp-replay-run: WP_CACHE_ENTRIES := $(ROOT)/$(WP_CACHE_DIR)/entries
-wp-replay-run: WP_SESSION := 0
-wp-replay-run:
-	@rm -rf $(WP_OUT) && mkdir -p $(WP_OUT)
-	@[ -d $(WP_CACHE_ENTRIES) ] || { echo "wp-replay: no committed cache in $(WP_CACHE_DIR): run make prove"; exit 1; }
-	@$(wp_run_all); \
-	if [ $$rc -ne 0 ]; then tail -20 $(WP_OUT)/wp.log; echo "wp-replay: frama-c exited $$rc"; exit 1; fi; \
-	python3 bsched/proofs/wp/wp_report.py $(WP_OUT)/wp.log $(WP_OUT)/wp.json $(WP_OUT)/report.json \
-	    --min-goals $(WP_MIN_GOALS) --spec $(WP_SPEC) --seconds $$secs > $(WP_OUT)/gate.log; gate=$$?; \
-	tail -3 $(WP_OUT)/gate.log; \
-	python3 bsched/proofs/wp/wp_cache.py check $(WP_OUT)/report.json $(WP_OUT)/wp.log $(WP_CACHE_DIR) \
-	    --seconds $$secs || gate=1; exit $$gate
-
-# Suite wp-replay (in make check): the replay, and that it fails when the cache does
-# not cover a goal (the replay of one function whose postcondition is changed in a
-# copy of bsched.c; wp_cache_check.sh).
-# Without a committed cache (wp/cache/goals.tsv, written by make prove), make check
-# runs the full proof instead, so the goals are always checked.
-ifneq ($(wildcard $(WP_CACHE_DIR)/goals.tsv),)
-CHECKS += wp-replay
-PROOF_CHECKS += wp-replay
-else
-CHECKS += wp
-PROOF_CHECKS += wp
-endif
-check-wp-replay:
-	@$(SETUP) frama-c
-	@python3 bsched/proofs/tools_check.py --only frama-c,why3,z3,cvc4,cvc5
-	@WP_PROVERS=$(WP_PROVERS) WP_STEPS=$(WP_STEPS) WP_TIMEOUT=$(WP_TIMEOUT) \
-	    bsched/proofs/wp/wp_cache_check.sh $(WP_CACHE_DIR) $(BUILD)/wp-replay-check $(RESULTS)/wp-replay.txt \
-	    "$(MAKE) --no-print-directory wp-replay-run"
+	@WP_PROVERS=$(WP_PROVERS) WP_STEPS=$(WP_STEPS) WP_STEPS_Z3=$(WP_STEPS_Z3) \
+	    bsched/proofs/wp/wp_trust_check.sh $(BUILD)/wp-trust $(RESULTS)/wp-trust.txt $(WP_SOURCES)
 
 # Suite wp-session: replaying the session proves a goal with its recorded prover alone
 # (session_check.sh, ~15 s).
@@ -231,13 +185,17 @@ wp-calibrate:
 	python3 bsched/proofs/wp/wp_steps.py $(BUILD)/wp-calibrate/wp.log --margin 2 \
 	    --limit $(WP_STEPS) --limit-z3 $(WP_STEPS_Z3) --timeout $(WP_TIMEOUT) || rc=1; exit $$rc
 
+# Suite wp: make prove (it writes no record), then its goals and the sources'
+# annotations against the record. Two results: the proof, the record.
 check-wp:
 	@$(SETUP) frama-c
 	@mkdir -p $(WP_DIR)
-	@$(MAKE) --no-print-directory prove WP_CACHE_COMMIT=0 > $(WP_DIR)/check.log 2>&1; rc=$$?; \
-	cat $(WP_DIR)/check.log; \
-	if [ $$rc -eq 0 ]; then $(call record,wp,1,0); else $(call record,wp,0,1); fi; \
-	[ $$rc -eq 0 ]
+	@$(MAKE) --no-print-directory prove WP_RECORD=0 > $(WP_DIR)/check.log 2>&1; rc=$$?; \
+	cat $(WP_DIR)/check.log; pass=0; fail=0; \
+	if [ $$rc -eq 0 ]; then pass=1; else fail=1; fi; \
+	if python3 bsched/proofs/wp/wp_goals.py check $(WP_DIR)/report.json $(WP_RECORD_DIR) \
+	    --root $(ROOT) --spec $(WP_SOURCES); then pass=$$((pass+1)); else fail=$$((fail+1)); fi; \
+	$(call record,wp,$$pass,$$fail); [ $$fail -eq 0 ]
 
 # Negative check: with -DBSCHED_MUTANT_NO_REVERSE, reverse_bits is the identity and
 # the spec's fig6_map with it (bsched_logic.h), so bsched_init still meets its (mutant)
@@ -285,8 +243,8 @@ check-proof-tools:
 # function and property with prover, steps and time; CBMC runs with bounds, property
 # count, solver and time; the negative checks; the mutants summary; the tool
 # versions) as build/proof-report/index.html and proof-report.json
-# (bsched/proofs/proof_report.py). Re-runs nothing: run make prove (or make
-# wp-replay) and make cbmc first; a run without a result is a row saying so.
+# (bsched/proofs/proof_report.py). Re-runs nothing: run make prove and make cbmc
+# first; a run without a result is a row saying so.
 PROOF_REPORT_DIR := $(BUILD)/proof-report
 .PHONY: proof-report check-proof-report
 proof-report:
@@ -303,8 +261,7 @@ check-proof-report:
 
 # make nightly: the long proof jobs that make check leaves out, each as a suite with
 # its record in build/results/ and the summary line of ci/run-checks, then the proof
-# report: the full WP proof (suite wp: every prover run; it does not rewrite the
-# committed cache, make prove does) and CBMC at the goal bounds (suite cbmc-deep).
+# report: CBMC at the goal bounds (suite cbmc-deep).
 NIGHTLY_CHECKS += cbmc-deep
 nightly:
 	@$(SETUP) base frama-c cbmc

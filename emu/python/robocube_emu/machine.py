@@ -19,10 +19,12 @@ The QEMU binary: launch.qemu_binary().
 
 import contextlib
 import os
+import selectors
 import shutil
 import socket
 import subprocess
 import tempfile
+import threading
 import time
 
 from . import launch
@@ -38,27 +40,54 @@ class QTestError(RuntimeError):
 
 
 class SerialPort:
-    """Host end of one board serial port (a Unix stream socket)."""
+    """Host end of one board serial port (a Unix stream socket).
+
+    A thread of the machine (SerialPump) reads every port as soon as QEMU writes
+    to it, whatever the test is doing meanwhile. QEMU's serial devices send each
+    byte with a blocking write while the vCPU holds QEMU's big lock: a port nobody
+    reads fills its socket after some 280 bytes (each one-byte send costs the
+    socket ~770 bytes of buffer), the vCPU then waits for the reader while holding
+    the lock, and QEMU's main loop, which needs the lock to answer QMP, waits for
+    the vCPU. A test blocked on a QMP answer (cont, say) while its board printed
+    was thus a deadlock, seen as QMP silent for 120 s whenever QEMU's main thread
+    was descheduled long enough for the board to print that much first."""
 
     def __init__(self, name, conn):
         self.name = name
         self.conn = conn
         self.conn.setblocking(False)
         self.received = bytearray()
+        self.closed = False             # QEMU closed its end
+        self._arrived = threading.Condition()
 
     def write(self, data):
         self.conn.sendall(data)
 
-    def poll(self):
-        """Moves whatever QEMU has sent so far into self.received."""
-        while True:
+    def _drain(self):
+        """Reads what the socket holds (caller holds self._arrived)."""
+        got = False
+        while not self.closed:
             try:
                 chunk = self.conn.recv(65536)
             except BlockingIOError:
-                return
+                break
+            except OSError:
+                self.closed = True
+                break
             if not chunk:
-                return
+                self.closed = True
+                break
             self.received += chunk
+            got = True
+        if got or self.closed:
+            self._arrived.notify_all()
+
+    def poll(self):
+        """Moves whatever QEMU has sent so far into self.received (the pump
+        may already have; this reads the socket too, so nothing sent before the
+        call is missing after it)."""
+        with self._arrived:
+            self._drain()
 
     def read_until(self, marker, timeout=10.0, step=None):
         """Waits (wall time) until marker appears; returns everything up to and
@@ -75,26 +104,64 @@ class SerialPort:
                           f"wanted {count} bytes", timeout, step)
 
     def _take(self, end, failure, timeout, step):
-        """Polls (calling step, or sleeping 10 ms, in between) until end() gives
-        how many received bytes to return, or raises TimeoutError after timeout s."""
+        """Until end() gives how many received bytes to return: with step, calls
+        it between polls (the qtest clock only moves when told); without, waits
+        for the pump to bring bytes. Raises TimeoutError after timeout s."""
         deadline = time.monotonic() + timeout
         while True:
-            self.poll()
-            n = end()
-            if n >= 0:
-                out = bytes(self.received[:n])
-                del self.received[:n]
-                return out
-            if time.monotonic() > deadline:
-                raise TimeoutError(f"serial {self.name}: {failure}; "
-                                   f"got {bytes(self.received)!r}")
+            with self._arrived:
+                self._drain()
+                n = end()
+                if n >= 0:
+                    out = bytes(self.received[:n])
+                    del self.received[:n]
+                    return out
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    raise TimeoutError(f"serial {self.name}: {failure}; "
+                                       f"got {bytes(self.received)!r}")
+                if not step:
+                    self._arrived.wait(min(left, 0.5))
             if step:
                 step()
-            else:
-                time.sleep(0.01)
 
     def close(self):
         self.conn.close()
+
+
+class SerialPump:
+    """One thread that reads every serial port of a machine as soon as QEMU writes
+    (see SerialPort); stop() ends it before the ports are closed."""
+
+    def __init__(self, ports):
+        self._ports = {p.conn.fileno(): p for p in ports}
+        self._wake_r, self._wake_w = os.pipe()
+        self._thread = threading.Thread(target=self._run, name="serial-pump", daemon=True)
+        self._thread.start()
+
+    def _run(self):
+        sel = selectors.DefaultSelector()
+        for fd in self._ports:
+            sel.register(fd, selectors.EVENT_READ)
+        sel.register(self._wake_r, selectors.EVENT_READ)
+        try:
+            while True:
+                for key, _ in sel.select():
+                    if key.fd == self._wake_r:
+                        return
+                    port = self._ports[key.fd]
+                    with port._arrived:
+                        port._drain()
+                        if port.closed:
+                            sel.unregister(key.fd)
+        finally:
+            sel.close()
+
+    def stop(self):
+        os.write(self._wake_w, b"x")
+        self._thread.join()
+        os.close(self._wake_r)
+        os.close(self._wake_w)
 
 
 class Machine:
@@ -117,6 +184,7 @@ class Machine:
         self._buf = b""
         self.proc = None
         self._qtest = None
+        self._pump = None
         self.qmp = None
         listeners = []
         try:
@@ -151,6 +219,7 @@ class Machine:
             # QEMU connects the chardevs, then qtest, then QMP, in this order.
             self.serial = [SerialPort(name, self._accept(lst, timeout))
                            for name, lst in zip(serial_names, serial_listeners)]
+            self._pump = SerialPump(self.serial)
             if self.qtest_enabled:
                 self._qtest = self._accept(qtest_listener, timeout)
             # A reply may be slow on a loaded host (once 30 s at a load average
@@ -203,6 +272,9 @@ class Machine:
         return self.serial[2]
 
     def close(self):
+        if self._pump:
+            self._pump.stop()
+            self._pump = None
         if self._qtest:
             self._qtest.close()
             self._qtest = None
