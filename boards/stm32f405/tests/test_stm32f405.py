@@ -35,13 +35,10 @@ def make(*args, timeout=120, stdin=""):
 
 def boot(elf):
     """The image on netduinoplus2, its console (USART1) on a robocube_emu socket,
-    read as it comes (robocube_emu.SerialPort). QEMU starts paused (-S) and runs
-    once QMP is connected, so the guest's first instruction comes after every
-    socket is in place."""
-    m = robocube_emu.Machine(kernel=elf, qemu=QEMU, machine="netduinoplus2",
-                         serial_names=("console",), extra_args=["-icount", ICOUNT, "-S"])
-    m.qmp_cmd("cont")
-    return m
+    read as it comes (robocube_emu.SerialPort), started once every socket is in
+    place (robocube_emu.Machine)."""
+    return robocube_emu.Machine(kernel=elf, qemu=QEMU, machine="netduinoplus2",
+                                serial_names=("console",), extra_args=["-icount", ICOUNT])
 
 
 def symbol(elf, name):

@@ -170,14 +170,18 @@ class Machine:
 
     def __init__(self, kernel=None, qtest=None, extra_args=(), timeout=20.0,
                  disable_watchdog=True, qemu=None, machine="robocube",
-                 serial_names=SERIAL_NAMES):
+                 serial_names=SERIAL_NAMES, paused=False):
         """kernel: ELF to run (then the CPU runs, no qtest unless qtest=True).
         disable_watchdog (qtest only): write SYPCR = 0 first, because the SIM
         software watchdog is on at reset (15.6 ms) and would reset the board
         during clock_step; SYPCR is write-once, so tests of SYPCR pass False.
         qemu, machine, serial_names: another QEMU binary and machine (the
         stm32f405 board: qemu-system-arm, netduinoplus2, its one console
-        USART), whose serial ports are served in the same way."""
+        USART), whose serial ports are served in the same way.
+        A running CPU starts paused (-S) and is continued once QMP is up, so
+        its first instruction comes after every socket is in place: an image
+        that prints much or switches the board off at once cannot race the
+        set-up. paused=True leaves it paused (the test sends cont)."""
         self.qtest_enabled = (kernel is None) if qtest is None else qtest
         self.dir = tempfile.mkdtemp(prefix="robocube-")
         self.irq_events = []            # (raise: bool, line) from irq_intercept_*
@@ -207,7 +211,7 @@ class Machine:
                 listeners.append(qtest_listener)
                 args += ["-accel", "qtest", "-qtest", f"unix:{qtest_path}"]
             else:
-                args += ["-accel", "tcg"]
+                args += ["-accel", "tcg", "-S"]
             args += list(extra_args)
             # icount=None: the run's -icount, if any, comes in extra_args.
             self.args = launch.command(args, kernel=kernel or None, icount=None, qemu=qemu,
@@ -228,6 +232,8 @@ class Machine:
                                timeout=QMP_REPLY_TIMEOUT)
             if self.qtest_enabled and disable_watchdog and machine == "robocube":
                 self.writeb(SYPCR, 0x00)
+            if not self.qtest_enabled and not paused:
+                self.qmp.command("cont")
         except BaseException:
             self.close()
             raise
