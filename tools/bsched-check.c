@@ -18,6 +18,7 @@
  *           phase), then exactly 2^pv cycles after each previous run, 2^(M - pv)
  *           times in the major cycle, and 2^pv cycles from its last run to its
  *           first of the next major cycle: once every 2^pv cycles, constant phase;
+ *           and that phase is the library's own initial wait;
  *   balance every cycle t runs exactly ceil((A - rev_M(t)) / 2^M) processes (0 when
  *           A <= rev_M(t)), the count of the balance theorem (bsched/README.md,
  *           bsched/spec/bsched_balance.h): so between floor(U) and ceil(U), and
@@ -51,6 +52,7 @@ struct checker {
     uint32_t *position;   /* place of each process in the stable ascending sort by pv */
     uint32_t *by_position;/* the process at each place */
     uint32_t *fig6_wait;  /* Fig. 6's initial wait of each process */
+    uint32_t *claimed;    /* the library's initial wait of each process (the trace's plan) */
     uint32_t *due;        /* Fig. 7: the cycle in which the process's wait is 0 */
     uint32_t *next;       /* Fig. 7's calendar: the next process due in the same cycle */
     uint32_t *calendar;   /* per cycle mod 2^maxpv, the first process due then */
@@ -209,6 +211,9 @@ static void period_cycle(struct checker *c, uint32_t t, uint32_t got, struct che
             if (t >= period) {
                 fail(r, CHECK_PERIOD, "process %lu (pv %u) first runs in cycle %lu, not within its period %lu",
                      (unsigned long)p, (unsigned)c->pv[p], (unsigned long)t, (unsigned long)period);
+            } else if (t != c->claimed[p]) {
+                fail(r, CHECK_PERIOD, "process %lu (pv %u) first runs in cycle %lu, its initial wait is %lu",
+                     (unsigned long)p, (unsigned)c->pv[p], (unsigned long)t, (unsigned long)c->claimed[p]);
             }
             c->first[p] = t;
         } else if (t - c->last[p] != period) {
@@ -302,6 +307,7 @@ static int read_header(FILE *f, struct checker *c, struct check_result *r)
         if (read_exact(f, &wait, sizeof wait) != 0) {
             return malformed(r, "the header ends early");
         }
+        c->claimed[i] = wait;
         if (wait != c->fig6_wait[i]) {
             fail(r, CHECK_PLAN, "process %lu (pv %u): the library's initial wait is %lu, Fig. 6's %lu",
                  (unsigned long)i, (unsigned)c->pv[i], (unsigned long)wait, (unsigned long)c->fig6_wait[i]);
@@ -411,6 +417,7 @@ int check_trace(FILE *trace, const uint8_t *pv, size_t count, struct check_resul
     c.position = malloc(count * sizeof *c.position);
     c.by_position = malloc(count * sizeof *c.by_position);
     c.fig6_wait = malloc(count * sizeof *c.fig6_wait);
+    c.claimed = malloc(count * sizeof *c.claimed);
     c.due = malloc(count * sizeof *c.due);
     c.next = malloc(count * sizeof *c.next);
     c.stamp = calloc(count, sizeof *c.stamp);
@@ -420,7 +427,7 @@ int check_trace(FILE *trace, const uint8_t *pv, size_t count, struct check_resul
     c.runs = calloc(count, sizeof *c.runs);
     c.called = malloc(count * sizeof *c.called);
     c.calendar = malloc((size_t)c.cycles * sizeof *c.calendar);
-    if (c.position != NULL && c.by_position != NULL && c.fig6_wait != NULL && c.due != NULL && c.next != NULL &&
+    if (c.position != NULL && c.by_position != NULL && c.fig6_wait != NULL && c.claimed != NULL && c.due != NULL && c.next != NULL &&
         c.stamp != NULL && c.deferred != NULL && c.first != NULL && c.last != NULL && c.runs != NULL &&
         c.called != NULL && c.calendar != NULL) {
         for (i = 0u; i < c.cycles; i++) {
@@ -437,6 +444,7 @@ int check_trace(FILE *trace, const uint8_t *pv, size_t count, struct check_resul
     free(c.position);
     free(c.by_position);
     free(c.fig6_wait);
+    free(c.claimed);
     free(c.due);
     free(c.next);
     free(c.stamp);
