@@ -925,7 +925,16 @@ static int certify_check(const char *source, const uint8_t *set, size_t count, l
         return 1;
     }
     append_log(log_path, "bsched-plan: compiled; the library runs the major cycle, the checker reads its trace\n");
-    if (pipe(pipefd) != 0 || (pid = fork()) < 0) {
+    memset(&usage, 0, sizeof usage);
+    if (pipe(pipefd) != 0) {
+        pipefd[0] = pipefd[1] = -1;
+    }
+    pid = pipefd[0] >= 0 ? fork() : -1;
+    if (pid < 0) {
+        if (pipefd[0] >= 0) {
+            close(pipefd[0]);
+            close(pipefd[1]);
+        }
         snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: the library could not be run");
         unlink(program);
         unlink(driver);
