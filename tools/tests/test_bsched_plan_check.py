@@ -410,3 +410,23 @@ def test_65536_processes_are_refused(tmp_path):
     assert r.returncode == 2 and r.stdout == ""
     assert len(r.stderr.splitlines()) == 1 and "too many processes" in r.stderr
     assert not (tmp_path / "x.cert").exists()
+
+
+def test_recheck_against_other_sources_names_what_differs(table1, tmp_path):
+    """An intact certificate re-checked on a changed bsched.c (the NO_REVERSE mutant)
+    is not reproduced: the digest and the verdict differ, and the run is refused."""
+    path, _ = table1
+    src = mutant_source(tmp_path, lambda t: "#define BSCHED_MUTANT_NO_REVERSE 1\n" + t)
+    r = run("--recheck", str(path), "--source", str(src))
+    assert r.returncode == 1
+    assert "differs: bsched.c-sha256:" in r.stdout and "differs: verdict:" in r.stdout, r.stdout
+    assert "differs: failed-checks: certificate 'plan 0, period 0," in r.stdout
+
+
+def test_recheck_refuses_a_format_1_certificate(tmp_path):
+    old = tmp_path / "old.cert"
+    old.write_text(with_digest(["bsched-plan certificate 1", "set: 1", "processes: 1", "maxpv: 1",
+                                "verdict: CERTIFIED"]))
+    r = run("--recheck", str(old))
+    assert r.returncode == 1
+    assert "format 1" in r.stdout and "certify the set again" in r.stdout
