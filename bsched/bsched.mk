@@ -10,9 +10,12 @@ ALL += $(BUILD)/bin/bsched-plan $(BUILD)/tests/test_bsched
 CHECKS += bsched-build bsched-unit bsched-plan
 HOST_UNIT_CHECKS += bsched-unit
 
-$(BUILD)/bin/bsched-plan: tools/bsched-plan.c bsched/bsched.c bsched/bsched.h
+# The run+check certificates name the checker by the sha256 of the source it was built from.
+$(BUILD)/bin/bsched-plan: tools/bsched-plan.c tools/bsched-check.c tools/bsched-check.h bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
-	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PLAN_CFLAGS) -o $@ tools/bsched-plan.c bsched/bsched.c
+	$(call quiet,HOSTCC,$@)$(HOST_CC) $(PLAN_CFLAGS) -Itools \
+	    -DBSCHED_CHECK_SHA256=\"$$(sha256sum tools/bsched-check.c | cut -c1-64)\" \
+	    -o $@ tools/bsched-plan.c tools/bsched-check.c bsched/bsched.c
 
 $(BUILD)/tests/test_bsched: bsched/tests/test_bsched.c bsched/tests/table2.h bsched/bsched.c bsched/bsched.h
 	@mkdir -p $(@D)
@@ -36,7 +39,8 @@ check-bsched-unit: $(BUILD)/tests/test_bsched
 	@$(SETUP) base
 	@RESULTS=$(RESULTS) ci/cmocka-suite bsched-unit $(BUILD)/tests/test_bsched
 
-# Its --certify tests run CBMC (ci/setup cbmc) on small sets.
+# Its --certify tests run CBMC (ci/setup cbmc) on small sets, and the run+check
+# method (the C compiler, as for the build) up to 65535 processes.
 check-bsched-plan: $(BUILD)/bin/bsched-plan
 	@$(SETUP) base cbmc
 	@BSCHED_PLAN=$(BUILD)/bin/bsched-plan ci/pytest-suite bsched-plan tools/tests

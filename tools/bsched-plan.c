@@ -4,19 +4,24 @@
  * also draws the major cycle as an SVG chart into FILE.
  *
  *   bsched-plan [--json] [--svg FILE] PV [PV ...]
- *   bsched-plan --certify FILE [--source DIR] [--time-limit S] PV [PV ...]
+ *   bsched-plan --certify FILE [--method cbmc|check|auto] [--source DIR] [--time-limit S] PV [PV ...]
  *   bsched-plan --recheck FILE [--source DIR] [--time-limit S]
  *   bsched-plan --help
  *
- * --certify has CBMC check the set's whole major cycle on bsched.c (certify_run
- * below) and writes a certificate to FILE; --recheck re-runs the check of a
- * certificate and compares (exit 0 only when it is reproduced and certified).
+ * --certify checks the set's whole major cycle on bsched.c and writes a
+ * certificate to FILE: by CBMC (certify_cbmc below) for small sets, or by
+ * running bsched.c and checking its trace with an independent checker
+ * (certify_check, tools/bsched-check.c) for sets out of CBMC's reach;
+ * --recheck re-runs the check of a certificate by its method and compares
+ * (exit 0 only when it is reproduced and certified).
  *
  * Exit status 0 on success, 2 on bad input (one line on stderr, nothing on stdout).
  * FILE is replaced only if it is a regular file (or does not exist yet); the
  * chart is written to a new temporary file beside it and renamed over it.
  */
-#define _POSIX_C_SOURCE 200809L /* mkstemp, fchmod, fsync, lstat, umask */
+#define _POSIX_C_SOURCE 200809L /* mkstemp, fchmod, fsync, lstat, umask, scandir */
+#define _DEFAULT_SOURCE         /* wait4: the library run's own peak memory */
+#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -24,6 +29,7 @@
 #include <string.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
@@ -31,9 +37,15 @@
 #include <unistd.h>
 
 #include "bsched.h"
+#include "bsched-check.h"
 
 /* The major cycle has 2^maxpv minor cycles; listing it is capped here. */
 #define PLAN_MAX_LISTED_PV 20
+/* The largest priority value --certify takes (the checker's limit: a major cycle of
+ * 65536 minor cycles); CBMC could not do larger ones in a day. */
+#define CERT_MAX_PV 16u
+/* --method auto: CBMC up to this many process-cycles (N x 2^maxpv), run+check above. */
+#define CERT_CBMC_MAX_WORK 1024ull
 /* The chart draws at most this many minor cycles and process rows (the rest
  * is left out, and the chart says so). */
 #define SVG_MAX_CYCLES 1024u
@@ -62,18 +74,25 @@ static void print_help(void)
            "  --json      one JSON object instead of the tables\n"
            "  --svg FILE  also draw the major cycle as an SVG chart into FILE (replaces FILE\n"
            "              only if it is a regular file or does not exist)\n"
-           "  --certify FILE  have CBMC check the whole major cycle on bsched.c (every cycle:\n"
-           "              period exactly 2^pv, load within floor(U)..ceil(U) and at most\n"
-           "              perfect, no idle cycle while U >= 1, the same schedule as Fig. 7's\n"
-           "              reference engine) and write a certificate to FILE (CBMC's log: FILE.log)\n"
-           "  --recheck FILE  re-run the check of certificate FILE and compare\n"
-           "  --source DIR    the bsched folder to certify (bsched.c, bsched.h, proofs/ref/)\n"
-           "  --time-limit S  stop CBMC after S seconds (default 3600): not certified\n"
+           "  --certify FILE  check the whole major cycle of bsched.c for the set (PV 0..16,\n"
+           "              every cycle: period exactly 2^pv with a constant phase, the balance\n"
+           "              theorem's load, so floor(U)..ceil(U) and at most perfect, the same\n"
+           "              schedule as Fig. 7) and write a certificate to FILE (the log: FILE.log)\n"
+           "  --method M  how --certify checks: cbmc (CBMC model-checks bsched.c beside Fig. 7's\n"
+           "              reference engine), check (run+check: bsched.c, compiled with $CC or cc,\n"
+           "              runs the major cycle and an independent checker reads its trace;\n"
+           "              O(N + 2^maxpv) memory) or auto (the default: cbmc while N x 2^maxpv <= %llu\n"
+           "              process-cycles, about 17 s of CBMC; check above)\n"
+           "  --recheck FILE  re-run the check of certificate FILE by its method and compare\n"
+           "  --source DIR    the bsched folder to certify (bsched.c, bsched.h, spec/, proofs/ref/)\n"
+           "  --time-limit S  stop the check after S seconds (default 3600): not certified\n"
+           "  --check-trace FILE  run the checker of --method check alone on a trace file (its\n"
+           "              format: tools/bsched-check.h) for the set PV...; exit 0 if it holds\n"
            "  --          the arguments after it are priority values\n"
            "  --help      this text\n"
            "Exit status: 0 done (certified), 1 not certified, 2 bad input or FILE not written\n"
            "(one line on stderr).\n",
-           PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS);
+           PLAN_MAX_LISTED_PV, BSCHED_MAX_PROCS, CERT_CBMC_MAX_WORK);
 }
 
 /* Numbers the members of each class in input order, in one pass (a running
@@ -365,9 +384,14 @@ static int write_svg_file(const char *path)
 #ifndef BSCHED_PLAN_SOURCE
 #define BSCHED_PLAN_SOURCE "bsched"
 #endif
-#define CERT_FORMAT "bsched-plan certificate 1"
+#define CERT_FORMAT "bsched-plan certificate 2"
+/* Written before --method: no method line, no digest of bsched.h and spec/. */
+#define CERT_FORMAT_1 "bsched-plan certificate 1"
 #define CERT_DEFAULT_LIMIT 3600L
-#define CERT_TEXT_MAX 65536u
+/* A certificate's set line holds up to 65535 values of up to 2 digits and a space. */
+#define CERT_TEXT_MAX 262144u
+
+enum cert_method { METHOD_AUTO, METHOD_CBMC, METHOD_CHECK };
 
 static const char CERTIFY_HARNESS[] =
     "void harness(void)\n"
@@ -421,12 +445,23 @@ static const char CERTIFY_HARNESS[] =
 
 /* What one check found; the certificate's lines. */
 struct certificate {
+    enum cert_method method;
     char set[CERT_TEXT_MAX];
-    char bsched_sha[80], fig7_sha[80], harness_sha[80];
+    /* the sources it was made from: the library (both methods) */
+    char bsched_sha[80], bsched_h_sha[80], spec_sha[80];
+    /* cbmc: Fig. 7's reference engine, the harness, the tool */
+    char fig7_sha[80], harness_sha[80];
     char cbmc[PATH_MAX + 32];
+    /* run+check: the trace driver, the checker, the compiler and its flags */
+    char driver_sha[80], checker_sha[80], compiler[PATH_MAX + 32], compile[PATH_MAX + 64];
     unsigned long count, maxpv, properties, failed;
-    char verdict[64];
+    /* run+check: what the checker saw */
+    unsigned long cycles;
+    unsigned long long executions;
+    char loads[128], failed_checks[256], first_failure[256];
+    char verdict[320];
     double seconds;
+    long checker_rss_kib, driver_rss_kib;
 };
 
 static int cert_error(const char *what, const char *arg)
@@ -570,30 +605,78 @@ static void count_results(const char *log, unsigned long *success, unsigned long
     fclose(f);
 }
 
-/* The check itself: fills c (set, digests, versions, verdict, time); CBMC's log
- * goes to log_path. Returns 0 certified, 1 not certified. */
-static int certify_run(const char *source, const uint8_t *set, size_t count, unsigned long maxpv,
-                       long limit, const char *log_path, struct certificate *c)
+/* sha256 of a string, through a temporary file and sha256sum. */
+static void text_sha256(const char *text, char *out, size_t size)
+{
+    char path[] = "/tmp/bsched-certificate.XXXXXX";
+    int fd = mkstemp(path);
+    out[0] = '\0';
+    if (fd < 0) {
+        return;
+    }
+    if (write(fd, text, strlen(text)) == (ssize_t)strlen(text)) {
+        close(fd);
+        file_sha256(path, out, size);
+    } else {
+        close(fd);
+    }
+    unlink(path);
+}
+
+/* The sha256 of the library's sources in `source`: bsched.c, bsched.h, and spec/
+ * as one digest (of the "digest  name" lines of its headers in name order):
+ * bsched.c includes the spec headers, so a define in one of them changes the code. */
+static void library_digests(const char *source, struct certificate *c)
+{
+    char path[PATH_MAX + 512], spec[PATH_MAX], one[80];
+    static char lines[64 * 160];
+    struct dirent **names = NULL;
+    size_t used = 0;
+    int n, k;
+
+    snprintf(path, sizeof path, "%s/bsched.c", source);
+    file_sha256(path, c->bsched_sha, sizeof c->bsched_sha);
+    snprintf(path, sizeof path, "%s/bsched.h", source);
+    file_sha256(path, c->bsched_h_sha, sizeof c->bsched_h_sha);
+    snprintf(spec, sizeof spec, "%s/spec", source);
+    c->spec_sha[0] = '\0';
+    n = scandir(spec, &names, NULL, alphasort);
+    if (n < 0) {
+        return;
+    }
+    lines[0] = '\0';
+    for (k = 0; k < n; k++) {
+        size_t len = strlen(names[k]->d_name);
+        if (len > 2u && strcmp(names[k]->d_name + len - 2u, ".h") == 0 && used + len + 80u < sizeof lines) {
+            snprintf(path, sizeof path, "%s/%s", spec, names[k]->d_name);
+            file_sha256(path, one, sizeof one);
+            used += (size_t)snprintf(lines + used, sizeof lines - used, "%s  %s\n", one, names[k]->d_name);
+        }
+        free(names[k]);
+    }
+    free(names);
+    if (used > 0u) {
+        text_sha256(lines, c->spec_sha, sizeof c->spec_sha);
+    }
+}
+
+/* The cbmc method: fills c's cbmc lines (the tool, the harness, the property
+ * counts, the verdict, the time); CBMC's log goes to log_path. Returns 0
+ * certified, 1 not certified. */
+static int certify_cbmc(const char *source, const uint8_t *set, size_t count, unsigned long maxpv,
+                        long limit, const char *log_path, struct certificate *c)
 {
     char dir[] = "/tmp/bsched-certify.XXXXXX";
     char harness[PATH_MAX], lib[PATH_MAX], ref[PATH_MAX], incl[PATH_MAX + 4], incl_ref[PATH_MAX + 8];
     char cbmc[PATH_MAX], capacity[48], unwind[32], version[256];
-    size_t i, used = 0;
+    size_t i;
     unsigned long success = 0, failure = 0, bound;
     int verified = 0, rc;
     double start;
     FILE *h;
 
-    memset(c, 0, sizeof *c);
-    for (i = 0; i < count; i++) {
-        int w = snprintf(c->set + used, sizeof c->set - used, "%s%u", i ? " " : "", (unsigned)set[i]);
-        used += (size_t)w;
-    }
-    c->count = (unsigned long)count;
-    c->maxpv = maxpv;
     snprintf(lib, sizeof lib, "%s/bsched.c", source);
     snprintf(ref, sizeof ref, "%s/proofs/ref/bsched_fig7.c", source);
-    file_sha256(lib, c->bsched_sha, sizeof c->bsched_sha);
     file_sha256(ref, c->fig7_sha, sizeof c->fig7_sha);
     find_cbmc(cbmc, sizeof cbmc);
     {
@@ -669,42 +752,408 @@ static int certify_run(const char *source, const uint8_t *set, size_t count, uns
     return 1;
 }
 
-/* The certificate's text without its last line (its own digest). */
-static void certificate_body(const struct certificate *c, char *out, size_t size)
+/* ------------------------------------------------------------------------
+ * The run+check method: the library runs, an independent checker judges.
+ *
+ * bsched-plan writes the trace driver below into a fresh temporary folder and
+ * compiles it with the bsched.c of --source, unchanged ($CC, else cc; the
+ * compiler's version and flags go into the certificate). The driver plans the
+ * set with bsched_init and runs the whole major cycle through bsched_run_cycle,
+ * writing what the library did (its plan, then each cycle's calls in order) to
+ * a pipe; the checker (tools/bsched-check.c: no code shared with bsched.c or
+ * Fig. 7's reference engine, none of their functions called) reads it cycle by
+ * cycle and checks it against its own Fig. 6 and Fig. 7 and the balance
+ * theorem's count. Nothing is stored per cycle: memory is O(N + 2^maxpv), time
+ * O(N + 2^maxpv + the runs of the major cycle). The checker's sha256 is the one
+ * of the source it was compiled from (BSCHED_CHECK_SHA256, set by the build).
+ */
+#ifndef BSCHED_CHECK_SHA256
+#define BSCHED_CHECK_SHA256 "unknown (bsched-plan built without BSCHED_CHECK_SHA256)"
+#endif
+
+static const char TRACE_DRIVER[] =
+    "/* Written by bsched-plan --certify (run+check): plans the set in the file argv[1]\n"
+    " * (one byte per priority value) with bsched.c, runs its whole major cycle through\n"
+    " * bsched_run_cycle and writes the trace to stdout (format: tools/bsched-check.h). */\n"
+    "#include <stdio.h>\n"
+    "#include \"bsched.h\"\n"
+    "static struct bsched s;\n"
+    "static uint8_t pv[BSCHED_MAX_PROCS + 1u];\n"
+    "static uint16_t called[BSCHED_MAX_PROCS];\n"
+    "static uint32_t calls;\n"
+    "static char out_buffer[1 << 16];\n"
+    "static void record(void *context, uint16_t index)\n"
+    "{\n"
+    "    (void)context;\n"
+    "    if (calls < BSCHED_MAX_PROCS) {\n"
+    "        called[calls] = index;\n"
+    "    }\n"
+    "    calls++; /* more calls than processes: the checker refuses the trace */\n"
+    "}\n"
+    "static void put32(uint32_t v)\n"
+    "{\n"
+    "    (void)fwrite(&v, sizeof v, 1u, stdout);\n"
+    "}\n"
+    "int main(int argc, char **argv)\n"
+    "{\n"
+    "    FILE *in = argc == 2 ? fopen(argv[1], \"rb\") : NULL;\n"
+    "    size_t n = in != NULL ? fread(pv, 1u, sizeof pv, in) : 0u;\n"
+    "    int32_t status, ran;\n"
+    "    uint32_t t, cycles;\n"
+    "    (void)setvbuf(stdout, out_buffer, _IOFBF, sizeof out_buffer);\n"
+    "    status = bsched_init(&s, pv, n);\n"
+    "    (void)fwrite(\"BSTRACE1\", 1u, 8u, stdout);\n"
+    "    (void)fwrite(&status, sizeof status, 1u, stdout);\n"
+    "    if (status == BSCHED_OK) {\n"
+    "        put32(s.count);\n"
+    "        put32(s.maxpv);\n"
+    "        put32(s.perfect);\n"
+    "        (void)fwrite(s.pv, 1u, s.count, stdout);\n"
+    "        (void)fwrite(s.offset, sizeof s.offset[0], s.count, stdout);\n"
+    "        cycles = (uint32_t)1u << s.maxpv;\n"
+    "        for (t = 0u; t < cycles; t++) {\n"
+    "            calls = 0u;\n"
+    "            ran = bsched_run_cycle(&s, record, NULL);\n"
+    "            (void)fwrite(&ran, sizeof ran, 1u, stdout);\n"
+    "            put32(calls);\n"
+    "            (void)fwrite(called, sizeof called[0], calls < BSCHED_MAX_PROCS ? calls : BSCHED_MAX_PROCS, stdout);\n"
+    "        }\n"
+    "        put32(s.cycle);\n"
+    "        put32(s.reversed);\n"
+    "        (void)fwrite(\"BSTREND1\", 1u, 8u, stdout);\n"
+    "    }\n"
+    "    return fflush(stdout) != 0 || ferror(stdout) ? 1 : 0;\n"
+    "}\n";
+
+/* The time limit of a run+check: SIGALRM kills the library run's process group,
+ * which ends the trace early (the checker then calls it malformed). */
+static volatile sig_atomic_t trace_timed_out;
+static volatile pid_t trace_pid;
+
+static void on_trace_alarm(int sig)
 {
-    snprintf(out, size,
-             CERT_FORMAT "\n"
-             "set: %s\n"
-             "processes: %lu\n"
-             "maxpv: %lu\n"
-             "bsched.c-sha256: %s\n"
-             "bsched_fig7.c-sha256: %s\n"
-             "harness-sha256: %s\n"
-             "cbmc: %s\n"
-             "solver: MiniSat (built into cbmc)\n"
-             "properties: %lu\n"
-             "failed: %lu\n"
-             "verdict: %s\n",
-             c->set, c->count, c->maxpv, c->bsched_sha, c->fig7_sha, c->harness_sha, c->cbmc,
-             c->properties, c->failed, c->verdict);
+    (void)sig;
+    trace_timed_out = 1;
+    if (trace_pid > 0) {
+        (void)kill(-trace_pid, SIGKILL);
+    }
 }
 
-/* sha256 of a string, through a temporary file and sha256sum. */
-static void text_sha256(const char *text, char *out, size_t size)
+static void append_log(const char *log_path, const char *line)
 {
-    char path[] = "/tmp/bsched-certificate.XXXXXX";
-    int fd = mkstemp(path);
-    out[0] = '\0';
-    if (fd < 0) {
+    FILE *f = fopen(log_path, "a");
+    if (f != NULL) {
+        fputs(line, f);
+        fclose(f);
+    }
+}
+
+/* This process's peak resident memory in KiB: VmHWM of /proc/self/status, the
+ * high-water mark of its own memory since exec. getrusage's ru_maxrss is kept
+ * across exec on Linux, so it would report the parent that forked us (a Python
+ * test runner: 140 MB) instead; it is the fallback without /proc. */
+static long own_peak_rss_kib(void)
+{
+    char line[256];
+    long kib = -1;
+    FILE *f = fopen("/proc/self/status", "r");
+    if (f != NULL) {
+        while (fgets(line, sizeof line, f) != NULL) {
+            if (strncmp(line, "VmHWM:", 6) == 0) {
+                kib = strtol(line + 6, NULL, 10);
+                break;
+            }
+        }
+        fclose(f);
+    }
+    if (kib < 0) {
+        struct rusage self;
+        kib = getrusage(RUSAGE_SELF, &self) == 0 ? self.ru_maxrss : 0;
+    }
+    return kib;
+}
+
+/* Writes text to path (a new file); 0 on success. */
+static int write_file(const char *path, const void *data, size_t size)
+{
+    FILE *f = fopen(path, "wb");
+    int failed;
+    if (f == NULL) {
+        return -1;
+    }
+    failed = fwrite(data, 1, size, f) != size;
+    failed |= fclose(f) != 0;
+    return failed ? -1 : 0;
+}
+
+/* The run+check method: fills c's run+check lines; the compiler's output and the
+ * checker's findings go to log_path. Returns 0 certified, 1 not certified. */
+static int certify_check(const char *source, const uint8_t *set, size_t count, long limit,
+                         const char *log_path, struct certificate *c)
+{
+    char dir[] = "/tmp/bsched-check.XXXXXX";
+    char driver[PATH_MAX], program[PATH_MAX], set_path[PATH_MAX], lib[PATH_MAX], incl[PATH_MAX + 4];
+    char capacity[48], version[256], line[512];
+    const char *cc_env = getenv("CC");
+    char cc[PATH_MAX];
+    struct check_result result;
+    struct sigaction alarm_action, old_action;
+    struct rusage usage;
+    int pipefd[2], status = 0, rc, checked, k;
+    long remaining;
+    size_t used;
+    double start = now_seconds();
+    pid_t pid;
+    FILE *trace;
+
+    snprintf(cc, sizeof cc, "%s", cc_env != NULL && cc_env[0] != '\0' ? cc_env : "cc");
+    snprintf(c->checker_sha, sizeof c->checker_sha, "%s", BSCHED_CHECK_SHA256);
+    text_sha256(TRACE_DRIVER, c->driver_sha, sizeof c->driver_sha);
+    snprintf(capacity, sizeof capacity, "-DBSCHED_MAX_PROCS=%lu", (unsigned long)count);
+    snprintf(c->compile, sizeof c->compile, "%s -std=c99 -O2 %s", cc, capacity);
+    snprintf(c->first_failure, sizeof c->first_failure, "none");
+    {
+        char *argv[] = {cc, "--version", NULL};
+        if (run_command(argv, NULL, version, sizeof version, 60) == 0) {
+            version[strcspn(version, "\r\n")] = '\0';
+            snprintf(c->compiler, sizeof c->compiler, "%s", version);
+        } else {
+            snprintf(c->compiler, sizeof c->compiler, "not found (%s)", cc);
+        }
+    }
+    if (c->bsched_sha[0] == '\0') {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c");
+        fprintf(stderr, "bsched-plan: cannot read %s/bsched.c\n", source);
+        return 1;
+    }
+    if (mkdtemp(dir) == NULL) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no temporary folder");
+        return 1;
+    }
+    snprintf(driver, sizeof driver, "%s/trace_driver.c", dir);
+    snprintf(program, sizeof program, "%s/trace_driver", dir);
+    snprintf(set_path, sizeof set_path, "%s/set", dir);
+    snprintf(lib, sizeof lib, "%s/bsched.c", source);
+    snprintf(incl, sizeof incl, "-I%s", source);
+    rc = write_file(driver, TRACE_DRIVER, strlen(TRACE_DRIVER)) | write_file(set_path, set, count);
+    if (rc == 0) {
+        char *argv[] = {cc, "-std=c99", "-O2", capacity, incl, "-o", program, driver, lib, NULL};
+        rc = run_command(argv, log_path, NULL, 0, limit);
+    }
+    if (rc != 0) {
+        snprintf(c->verdict, sizeof c->verdict, rc == -2 ? "NOT CERTIFIED: time limit of %ld s"
+                 : "NOT CERTIFIED: the library did not compile (see the log)", limit);
+        unlink(program);
+        unlink(driver);
+        unlink(set_path);
+        rmdir(dir);
+        return 1;
+    }
+    append_log(log_path, "bsched-plan: compiled; the library runs the major cycle, the checker reads its trace\n");
+    memset(&usage, 0, sizeof usage);
+    if (pipe(pipefd) != 0) {
+        pipefd[0] = pipefd[1] = -1;
+    }
+    pid = pipefd[0] >= 0 ? fork() : -1;
+    if (pid < 0) {
+        if (pipefd[0] >= 0) {
+            close(pipefd[0]);
+            close(pipefd[1]);
+        }
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: the library could not be run");
+        unlink(program);
+        unlink(driver);
+        unlink(set_path);
+        rmdir(dir);
+        return 1;
+    }
+    if (pid == 0) {
+        int log_fd = open(log_path, O_WRONLY | O_APPEND | O_CREAT, 0644);
+        char *argv[] = {program, set_path, NULL};
+        (void)setpgid(0, 0);
+        (void)dup2(pipefd[1], 1);
+        if (log_fd >= 0) {
+            (void)dup2(log_fd, 2);
+        }
+        close(pipefd[0]);
+        close(pipefd[1]);
+        execv(program, argv);
+        _exit(127);
+    }
+    (void)setpgid(pid, pid);
+    close(pipefd[1]);
+    trace_pid = pid;
+    trace_timed_out = 0;
+    memset(&alarm_action, 0, sizeof alarm_action);
+    alarm_action.sa_handler = on_trace_alarm;
+    sigemptyset(&alarm_action.sa_mask);
+    (void)sigaction(SIGALRM, &alarm_action, &old_action);
+    remaining = limit - (long)(now_seconds() - start);
+    alarm((unsigned)(remaining > 1 ? remaining : 1));
+    trace = fdopen(pipefd[0], "rb");
+    if (trace == NULL) {
+        close(pipefd[0]);
+        checked = -1;
+    } else {
+        (void)setvbuf(trace, NULL, _IOFBF, 1u << 16);
+        checked = check_trace(trace, set, count, &result);
+        fclose(trace); /* a library run still writing gets SIGPIPE */
+    }
+    while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+    }
+    alarm(0);
+    (void)sigaction(SIGALRM, &old_action, NULL);
+    trace_pid = 0;
+    c->driver_rss_kib = usage.ru_maxrss;
+    c->checker_rss_kib = own_peak_rss_kib();
+    unlink(program);
+    unlink(driver);
+    unlink(set_path);
+    rmdir(dir);
+    if (checked < 0) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: the checker ran out of memory");
+        return 1;
+    }
+    c->cycles = result.cycles;
+    c->executions = result.executions;
+    snprintf(c->loads, sizeof c->loads, "%lu..%lu, %lu of %lu cycles at %lu", result.lowest_load,
+             result.highest_load, result.cycles_at_highest, result.cycles, result.highest_load);
+    snprintf(c->first_failure, sizeof c->first_failure, "%s", result.first_failure);
+    used = 0;
+    c->failed = 0;
+    for (k = 0; k < CHECK_COUNT; k++) {
+        used += (size_t)snprintf(c->failed_checks + used, sizeof c->failed_checks - used, "%s%s %llu",
+                                 k ? ", " : "", check_property_name[k], result.failed[k]);
+        c->failed += (unsigned long)result.failed[k];
+        snprintf(line, sizeof line, "[%s] %s: %s\n", check_property_name[k],
+                 result.failed[k] ? "violations found" : "holds in every cycle",
+                 result.failed[k] ? "FAILURE" : "SUCCESS");
+        append_log(log_path, line);
+    }
+    snprintf(line, sizeof line, "first failure: %s\n", result.first_failure);
+    append_log(log_path, line);
+    if (trace_timed_out) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: time limit of %ld s", limit);
+        return 1;
+    }
+    if (checked != 0) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: %s", result.malformed ? "the trace is malformed"
+                 : "the checker refuses the schedule");
+        return 1;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: the library run exited with status %d",
+                 WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        return 1;
+    }
+    snprintf(c->verdict, sizeof c->verdict, "CERTIFIED");
+    return 0;
+}
+
+/* --check-trace FILE PV...: the checker alone on a trace file (so that the
+ * checker can be shown wrong traces no library writes). Exit 0 when every
+ * property holds, 1 when one fails, 2 when FILE cannot be read. */
+static int check_trace_file(const char *path, const uint8_t *set, size_t count)
+{
+    struct check_result result;
+    FILE *f = fopen(path, "rb");
+    int checked, k;
+    if (f == NULL) {
+        return cert_error("cannot read the trace", path);
+    }
+    checked = check_trace(f, set, count, &result);
+    fclose(f);
+    if (checked < 0) {
+        fprintf(stderr, "bsched-plan: the checker ran out of memory\n");
+        return 2;
+    }
+    printf("check-trace: %s: %lu cycles, %llu runs, failed:", checked == 0 ? "holds" : "FAILED", result.cycles,
+           result.executions);
+    for (k = 0; k < CHECK_COUNT; k++) {
+        printf("%s %s %llu", k ? "," : "", check_property_name[k], result.failed[k]);
+    }
+    printf("; first failure: %s\n", result.first_failure);
+    return checked == 0 ? 0 : 1;
+}
+
+/* The method --method auto picks: CBMC while the set's major cycle has at most
+ * CERT_CBMC_MAX_WORK process-cycles (N x 2^maxpv; CBMC costs about 4 s + 13 ms
+ * each, MEASUREMENTS.md), run+check above. */
+static enum cert_method auto_method(size_t count, unsigned long maxpv)
+{
+    return (unsigned long long)count << maxpv <= CERT_CBMC_MAX_WORK ? METHOD_CBMC : METHOD_CHECK;
+}
+
+/* Certifies the set with the method given (not METHOD_AUTO): fills c. Returns 0
+ * certified, 1 not certified. */
+static int certify_run(enum cert_method method, const char *source, const uint8_t *set, size_t count,
+                       unsigned long maxpv, long limit, const char *log_path, struct certificate *c)
+{
+    size_t i, used = 0;
+    double start = now_seconds();
+    int verdict;
+
+    memset(c, 0, sizeof *c);
+    c->method = method;
+    for (i = 0; i < count; i++) {
+        used += (size_t)snprintf(c->set + used, sizeof c->set - used, "%s%u", i ? " " : "", (unsigned)set[i]);
+    }
+    c->count = (unsigned long)count;
+    c->maxpv = maxpv;
+    library_digests(source, c);
+    if (method == METHOD_CBMC) {
+        verdict = certify_cbmc(source, set, count, maxpv, limit, log_path, c);
+    } else {
+        verdict = certify_check(source, set, count, limit, log_path, c);
+        c->seconds = now_seconds() - start;
+    }
+    return verdict;
+}
+
+/* The certificate's text without its last two lines (the time and its own digest). */
+static void certificate_body(const struct certificate *c, char *out, size_t size)
+{
+    int used = snprintf(out, size,
+                        CERT_FORMAT "\n"
+                        "method: %s\n"
+                        "set: %s\n"
+                        "processes: %lu\n"
+                        "maxpv: %lu\n"
+                        "bsched.c-sha256: %s\n"
+                        "bsched.h-sha256: %s\n"
+                        "spec-sha256: %s\n",
+                        c->method == METHOD_CBMC ? "cbmc" : "run+check", c->set, c->count, c->maxpv,
+                        c->bsched_sha, c->bsched_h_sha, c->spec_sha);
+    if (used < 0 || (size_t)used >= size) {
         return;
     }
-    if (write(fd, text, strlen(text)) == (ssize_t)strlen(text)) {
-        close(fd);
-        file_sha256(path, out, size);
+    if (c->method == METHOD_CBMC) {
+        snprintf(out + used, size - (size_t)used,
+                 "bsched_fig7.c-sha256: %s\n"
+                 "harness-sha256: %s\n"
+                 "cbmc: %s\n"
+                 "solver: MiniSat (built into cbmc)\n"
+                 "properties: %lu\n"
+                 "failed: %lu\n"
+                 "verdict: %s\n",
+                 c->fig7_sha, c->harness_sha, c->cbmc, c->properties, c->failed, c->verdict);
     } else {
-        close(fd);
+        snprintf(out + used, size - (size_t)used,
+                 "trace-driver-sha256: %s\n"
+                 "checker-sha256: %s\n"
+                 "compiler: %s\n"
+                 "compile: %s\n"
+                 "checks: plan period balance fig7 repeat\n"
+                 "cycles: %lu\n"
+                 "executions: %llu\n"
+                 "loads: %s\n"
+                 "failed: %lu\n"
+                 "failed-checks: %s\n"
+                 "first-failure: %s\n"
+                 "verdict: %s\n",
+                 c->driver_sha, c->checker_sha, c->compiler, c->compile, c->cycles, c->executions, c->loads,
+                 c->failed, c->failed_checks, c->first_failure, c->verdict);
     }
-    unlink(path);
 }
 
 static int write_certificate(const char *path, const struct certificate *c)
@@ -727,9 +1176,16 @@ static int write_certificate(const char *path, const struct certificate *c)
 
 static void print_certificate_summary(const char *path, const struct certificate *c)
 {
-    printf("%s: %lu processes, maxpv %lu, %lu properties, %s (%.1f s) -> %s\n",
-           c->verdict[0] == 'C' ? "certified" : "not certified", c->count, c->maxpv, c->properties,
-           c->verdict, c->seconds, path);
+    if (c->method == METHOD_CBMC) {
+        printf("%s: %lu processes, maxpv %lu, cbmc: %lu properties, %s (%.1f s) -> %s\n",
+               c->verdict[0] == 'C' ? "certified" : "not certified", c->count, c->maxpv, c->properties,
+               c->verdict, c->seconds, path);
+    } else {
+        printf("%s: %lu processes, maxpv %lu, run+check: %lu cycles, %llu runs, %s (%.1f s; max RSS: "
+               "checker %ld KiB, library run %ld KiB) -> %s\n",
+               c->verdict[0] == 'C' ? "certified" : "not certified", c->count, c->maxpv, c->cycles,
+               c->executions, c->verdict, c->seconds, c->checker_rss_kib, c->driver_rss_kib, path);
+    }
 }
 
 /* Reads the value of "key: value" from a certificate's text. */
@@ -756,23 +1212,31 @@ static int cert_field(const char *text, const char *key, char *out, size_t size)
     return -1;
 }
 
-/* --recheck FILE: the certificate is intact (its digest), its set is re-checked
- * with the same harness on the same sources and tools, and every line but the
- * time must come out the same. */
+/* --recheck FILE: the certificate is intact (its digest), its set is checked
+ * again by the method it names, on the current sources and tools, and every
+ * line but the time must come out the same. */
 static int recheck(const char *path, const char *source, long limit)
 {
     static char text[CERT_TEXT_MAX + 16384], body[CERT_TEXT_MAX + 8192], value[CERT_TEXT_MAX];
+    static char was[CERT_TEXT_MAX], is[CERT_TEXT_MAX];
     static struct certificate now;
     static uint8_t set[BSCHED_MAX_PROCS];
-    char digest[80], stored[80], log_path[PATH_MAX];
+    char digest[80], stored[80], log_path[PATH_MAX], method[32];
     FILE *f = fopen(path, "r");
     size_t got, count = 0, cut;
     unsigned long maxpv = 0;
     char *p, *end, *last_line;
     int differs = 0;
-    static const char *const keys[] = {"set", "processes", "maxpv", "bsched.c-sha256", "bsched_fig7.c-sha256",
-                                       "harness-sha256", "cbmc", "solver", "properties", "failed", "verdict"};
-    size_t k;
+    enum cert_method m;
+    static const char *const common_keys[] = {"method", "set", "processes", "maxpv", "bsched.c-sha256",
+                                              "bsched.h-sha256", "spec-sha256"};
+    static const char *const cbmc_keys[] = {"bsched_fig7.c-sha256", "harness-sha256", "cbmc", "solver",
+                                            "properties", "failed", "verdict"};
+    static const char *const check_keys[] = {"trace-driver-sha256", "checker-sha256", "compiler", "compile",
+                                             "checks", "cycles", "executions", "loads", "failed",
+                                             "failed-checks", "first-failure", "verdict"};
+    const char *const *keys;
+    size_t k, nkeys;
 
     if (f == NULL) {
         return cert_error("cannot read the certificate", path);
@@ -780,6 +1244,11 @@ static int recheck(const char *path, const char *source, long limit)
     got = fread(text, 1, sizeof text - 1u, f);
     fclose(f);
     text[got] = '\0';
+    if (strncmp(text, CERT_FORMAT_1 "\n", strlen(CERT_FORMAT_1) + 1u) == 0) {
+        printf("recheck: FAILED: %s is a certificate of format 1 (before --method and the digests of "
+               "bsched.h and spec/): certify the set again\n", path);
+        return 1;
+    }
     if (strncmp(text, CERT_FORMAT "\n", strlen(CERT_FORMAT) + 1u) != 0) {
         return cert_error("not a bsched-plan certificate:", path);
     }
@@ -797,14 +1266,20 @@ static int recheck(const char *path, const char *source, long limit)
         printf("recheck: FAILED: %s is corrupted: its lines do not match its certificate-sha256\n", path);
         return 1;
     }
+    if (cert_field(text, "method", method, sizeof method) != 0 ||
+        (strcmp(method, "cbmc") != 0 && strcmp(method, "run+check") != 0)) {
+        printf("recheck: FAILED: %s names no method (cbmc or run+check)\n", path);
+        return 1;
+    }
+    m = strcmp(method, "cbmc") == 0 ? METHOD_CBMC : METHOD_CHECK;
     if (cert_field(text, "set", value, sizeof value) != 0) {
         printf("recheck: FAILED: %s has no set\n", path);
         return 1;
     }
     for (p = value; *p != '\0';) {
         unsigned long v = strtoul(p, &end, 10);
-        if (end == p || v > PLAN_MAX_LISTED_PV || count >= BSCHED_MAX_PROCS) {
-            printf("recheck: FAILED: %s: the set is not a list of priority values\n", path);
+        if (end == p || v > CERT_MAX_PV || count >= BSCHED_MAX_PROCS) {
+            printf("recheck: FAILED: %s: the set is not a list of priority values 0..%u\n", path, CERT_MAX_PV);
             return 1;
         }
         set[count++] = (uint8_t)v;
@@ -819,31 +1294,35 @@ static int recheck(const char *path, const char *source, long limit)
         return 1;
     }
     snprintf(log_path, sizeof log_path, "%s.recheck.log", path);
-    (void)certify_run(source, set, count, maxpv, limit, log_path, &now);
+    (void)certify_run(m, source, set, count, maxpv, limit, log_path, &now);
     certificate_body(&now, body, sizeof body);
-    for (k = 0; k < sizeof keys / sizeof keys[0]; k++) {
-        char was[CERT_TEXT_MAX], is[CERT_TEXT_MAX];
-        if (cert_field(text, keys[k], was, sizeof was) != 0) {
+    keys = m == METHOD_CBMC ? cbmc_keys : check_keys;
+    nkeys = m == METHOD_CBMC ? sizeof cbmc_keys / sizeof cbmc_keys[0] : sizeof check_keys / sizeof check_keys[0];
+    for (k = 0; k < sizeof common_keys / sizeof common_keys[0] + nkeys; k++) {
+        const char *key = k < sizeof common_keys / sizeof common_keys[0]
+                              ? common_keys[k] : keys[k - sizeof common_keys / sizeof common_keys[0]];
+        if (cert_field(text, key, was, sizeof was) != 0) {
             was[0] = '\0';
         }
-        if (cert_field(body, keys[k], is, sizeof is) != 0) {
+        if (cert_field(body, key, is, sizeof is) != 0) {
             is[0] = '\0';
         }
         if (strcmp(was, is) != 0) {
-            printf("recheck: differs: %s: certificate '%s', now '%s'\n", keys[k], was, is);
+            printf("recheck: differs: %s: certificate '%.200s%s', now '%.200s%s'\n", key, was,
+                   strlen(was) > 200u ? "..." : "", is, strlen(is) > 200u ? "..." : "");
             differs = 1;
         }
     }
     if (differs) {
-        printf("recheck: FAILED: the check of %s does not reproduce it (CBMC's log: %s)\n", path, log_path);
+        printf("recheck: FAILED: the check of %s does not reproduce it (the log: %s)\n", path, log_path);
         return 1;
     }
     if (strcmp(now.verdict, "CERTIFIED") != 0) {
         printf("recheck: reproduced, but the set is %s (%s)\n", now.verdict, log_path);
         return 1;
     }
-    printf("recheck: OK: %s reproduced: %lu processes, %lu properties, CERTIFIED (%.1f s)\n", path,
-           now.count, now.properties, now.seconds);
+    printf("recheck: OK: %s reproduced by %s: %lu processes, CERTIFIED (%.1f s)\n", path, method, now.count,
+           now.seconds);
     return 0;
 }
 
@@ -853,6 +1332,7 @@ int main(int argc, char **argv)
     const char *svg = NULL;
     const char *certify = NULL;
     const char *recheck_file = NULL;
+    const char *trace_file = NULL;
     const char *source = BSCHED_PLAN_SOURCE;
     long limit = CERT_DEFAULT_LIMIT;
     size_t count = 0;
@@ -860,6 +1340,9 @@ int main(int argc, char **argv)
     int32_t rc;
     unsigned long maxpv = 0;
     int options_done = 0;
+    enum cert_method method = METHOD_AUTO;
+    const char *method_arg = NULL;
+    int first_above_cert = 0; /* argv index of the first pv above CERT_MAX_PV */
 
     for (a = 1; a < argc; a++) {
         const char *arg = argv[a];
@@ -874,17 +1357,35 @@ int main(int argc, char **argv)
             continue;
         }
         if (!options_done && (strcmp(arg, "--certify") == 0 || strcmp(arg, "--recheck") == 0 ||
-                              strcmp(arg, "--source") == 0)) {
+                              strcmp(arg, "--source") == 0 || strcmp(arg, "--check-trace") == 0)) {
             if (a + 1 >= argc || argv[a + 1][0] == '\0') {
                 return usage_error(strcmp(arg, "--source") == 0 ? "--source needs a folder"
                                                                 : "needs a certificate file name:", arg);
             }
             if (strcmp(arg, "--certify") == 0) {
                 certify = argv[++a];
+            } else if (strcmp(arg, "--check-trace") == 0) {
+                trace_file = argv[++a];
             } else if (strcmp(arg, "--recheck") == 0) {
                 recheck_file = argv[++a];
             } else {
                 source = argv[++a];
+            }
+            continue;
+        }
+        if (!options_done && strcmp(arg, "--method") == 0) {
+            if (a + 1 >= argc) {
+                return usage_error("--method needs cbmc, check or auto", arg);
+            }
+            method_arg = argv[++a];
+            if (strcmp(method_arg, "cbmc") == 0) {
+                method = METHOD_CBMC;
+            } else if (strcmp(method_arg, "check") == 0 || strcmp(method_arg, "run+check") == 0) {
+                method = METHOD_CHECK;
+            } else if (strcmp(method_arg, "auto") == 0) {
+                method = METHOD_AUTO;
+            } else {
+                return usage_error("--method is cbmc, check or auto, not", method_arg);
             }
             continue;
         }
@@ -934,19 +1435,38 @@ int main(int argc, char **argv)
         if (count >= BSCHED_MAX_PROCS) {
             return usage_error("too many processes at argument", arg);
         }
+        if (value > (long)CERT_MAX_PV && first_above_cert == 0) {
+            first_above_cert = a;
+        }
         pvs[count++] = (uint8_t)value;
         if ((unsigned long)value > maxpv) {
             maxpv = (unsigned long)value;
         }
     }
     if (recheck_file != NULL) {
-        if (count != 0 || certify != NULL || json || svg != NULL) {
+        if (count != 0 || certify != NULL || json || svg != NULL || method_arg != NULL) {
             return usage_error("--recheck takes only the certificate (and --source, --time-limit):", recheck_file);
         }
         return recheck(recheck_file, source, limit);
     }
     if (count == 0) {
         return usage_error("no priority values given", "");
+    }
+    if (certify == NULL && method_arg != NULL) {
+        return usage_error("--method goes with --certify:", method_arg);
+    }
+    if (trace_file != NULL) {
+        if (certify != NULL || json || svg != NULL || method_arg != NULL) {
+            return usage_error("--check-trace takes only the trace and the priority values:", trace_file);
+        }
+        if (first_above_cert != 0) {
+            return usage_error("priority value above 16, the largest the checker takes:", argv[first_above_cert]);
+        }
+        return check_trace_file(trace_file, pvs, count);
+    }
+    if (certify != NULL && first_above_cert != 0) {
+        /* Both methods stop at 16: the checker's limit, and far beyond CBMC's reach. */
+        return usage_error("priority value above 16, the largest --certify takes:", argv[first_above_cert]);
     }
     if (certify != NULL) {
         static struct certificate cert;
@@ -960,7 +1480,10 @@ int main(int argc, char **argv)
             return 2;
         }
         snprintf(log_path, sizeof log_path, "%s.log", certify);
-        verdict = certify_run(source, pvs, count, maxpv, limit, log_path, &cert);
+        if (method == METHOD_AUTO) {
+            method = auto_method(count, maxpv);
+        }
+        verdict = certify_run(method, source, pvs, count, maxpv, limit, log_path, &cert);
         if (write_certificate(certify, &cert) != 0) {
             return 2;
         }

@@ -1,4 +1,5 @@
-"""bsched-plan --certify / --recheck: CBMC's certificate for one priority set.
+"""bsched-plan --certify / --recheck: CBMC's certificate for one priority set
+(--method cbmc; the run+check method: test_bsched_plan_check.py).
 
 Each CBMC run of the paper's Table 1 set (9 processes, maxpv 4) takes 5-10 s of CPU.
 """
@@ -40,7 +41,9 @@ def table1_certificate(tmp_path_factory):
 def test_table1_set_is_certified(table1_certificate):
     path, r = table1_certificate
     assert r.returncode == 0, r.stdout + r.stderr
-    f, _ = fields(path)
+    f, text = fields(path)
+    # 9 x 2^4 = 144 process-cycles: --method auto takes CBMC
+    assert text.startswith("bsched-plan certificate 2\nmethod: cbmc\n")
     assert f["verdict"] == "CERTIFIED"
     assert f["set"] == " ".join(TABLE1_PV)
     assert f["processes"] == "9" and f["maxpv"] == "4"
@@ -94,7 +97,7 @@ def test_a_broken_bsched_c_is_not_certified(tmp_path):
     lib = src / "bsched.c"
     lib.write_text("#define BSCHED_MUTANT_NO_REVERSE 1\n" + lib.read_text())
     cert = tmp_path / "broken.cert"
-    r = run("--certify", str(cert), "--source", str(src), "1", "1", "2", "2")
+    r = run("--certify", str(cert), "--method", "cbmc", "--source", str(src), "1", "1", "2", "2")
     assert r.returncode == 1, r.stdout + r.stderr
     f, _ = fields(cert)
     assert f["verdict"].startswith("NOT CERTIFIED") and int(f["failed"]) >= 1
@@ -103,7 +106,7 @@ def test_a_broken_bsched_c_is_not_certified(tmp_path):
 
 def test_time_limit_stops_cbmc_and_is_not_certified(tmp_path):
     cert = tmp_path / "slow.cert"
-    r = run("--certify", str(cert), "--time-limit", "1", *(["8"] * 64))
+    r = run("--certify", str(cert), "--method", "cbmc", "--time-limit", "1", *(["8"] * 64))
     assert r.returncode == 1
     assert fields(cert)[0]["verdict"] == "NOT CERTIFIED: time limit of 1 s"
 
@@ -114,6 +117,7 @@ def test_time_limit_stops_cbmc_and_is_not_certified(tmp_path):
     (["--certify", "x.cert", "-1"], "'-1'"),
     (["--certify", "x.cert", "32"], "'32'"),
     (["--certify", "x.cert", "21"], "'21'"),
+    (["--certify", "x.cert", "17"], "'17'"),
     (["--certify"], "'--certify'"),
     (["--recheck"], "'--recheck'"),
     (["--certify", "x.cert", "--time-limit", "0", "1"], "'0'"),
