@@ -253,6 +253,11 @@ static uint32_t theorem_load(const struct checker *c, uint32_t t)
 
 static void balance_end(const struct checker *c, struct check_result *r)
 {
+    /* cycles is 2^maxpv, set once; the static analyser cannot see it is never 0. */
+    if (c->cycles == 0u) {
+        fail(r, CHECK_BALANCE, "a major cycle of 0 cycles");
+        return;
+    }
     uint64_t rest = c->area % c->cycles;
     unsigned long at_ceil = rest != 0u ? (unsigned long)rest : (unsigned long)c->cycles;
     if (r->lowest_load < c->floor_u || r->highest_load > c->ceil_u) {
