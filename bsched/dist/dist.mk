@@ -18,7 +18,7 @@ DIST_NAME    := bsched-$(DIST_VERSION)
 DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 # Repository paths, kept as they are inside the bundle (so the proof jobs' own
 # Makefiles run unchanged there).
-DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
+DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION bsched/CHANGELOG.md $(wildcard bsched/spec/*.h) \
     bsched/CMakeLists.txt $(wildcard bsched/cmake/*.in) bsched/library.json $(wildcard bsched/zephyr/*) \
     bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/proofs/ref/tests/test_bsched_fig7.c \
     bsched/tests/test_bsched.c bsched/tests/table2.h bsched/proofs/README.md bsched/CAVEATS.md \
