@@ -84,6 +84,17 @@ else
     fail "find_package(bsched $next) fails for the version, not for another reason" "$out/want-next-major.log"
 fi
 
+# The installed tree holds no path of its own, so a copy works where it lands.
+moved=$out/moved
+cp -r "$inst" "$moved"
+if grep -rlF "$inst" "$inst" > "$out/moved.log" 2>&1; then
+    fail "the installed files name the folder they were installed in" "$out/moved.log"
+elif configure $here/installed "$out/installed-moved" "-DCMAKE_PREFIX_PATH=$moved" >> "$out/moved.log" 2>&1 && \
+     grep -q "bsched $version from $moved/lib/cmake/bsched" "$out/moved.log" && \
+     [ "$(realpath -m "$(PKG_CONFIG_PATH=$moved/lib/pkgconfig "$PKG_CONFIG" --variable=includedir bsched)")" = "$moved/include" ]; then
+    ok "a copy of the installed tree elsewhere is what find_package and pkg-config find there"
+else fail "a copy of the installed tree elsewhere is not found there" "$out/moved.log"; fi
+
 # --- pkg-config (host) ---------------------------------------------------------
 export PKG_CONFIG_PATH=$inst/lib/pkgconfig
 got=$("$PKG_CONFIG" --modversion bsched 2>&1)
