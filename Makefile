@@ -79,6 +79,7 @@ include bsched/proofs/ref/ref.mk
 include bsched/proofs/wp/wp.mk
 include bsched/proofs/cbmc/cbmc.mk
 include bsched/dist/dist.mk
+include bsched/tests/package/package.mk
 include emu/emu.mk
 include emu/io.mk
 include boards/robocube/board.mk

@@ -2,8 +2,10 @@
 # of what an embedder takes: the bundle's Makefile, setup.sh and README are
 # this folder's other files, shipped as they are, and the bundle is built from
 # bsched/ alone (nothing outside it goes in or is read).
-#   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, the WP and CBMC
-#                    proof jobs, unit tests, a README for embedders and a standalone
+#   make dist        build/dist/bsched-VERSION.tar.gz: library, spec, its CMake, pkg-config,
+#                    Zephyr and PlatformIO files, the WP and CBMC proof jobs, unit tests,
+#                    SOURCES.sha256 (every file of its bsched/ with its SHA-256),
+#                    a README for embedders and a standalone
 #                    Makefile (bsched/dist/Makefile) whose make prove / make cbmc run
 #                    in the unpacked folder without this repository
 #   make distcheck   unpacks it in a temporary folder and runs its make test, make
@@ -16,7 +18,8 @@ DIST_NAME    := bsched-$(DIST_VERSION)
 DIST_TAR     := $(BUILD)/dist/$(DIST_NAME).tar.gz
 # Repository paths, kept as they are inside the bundle (so the proof jobs' own
 # Makefiles run unchanged there).
-DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION $(wildcard bsched/spec/*.h) \
+DIST_FILES = bsched/bsched.c bsched/bsched.h bsched/VERSION bsched/CHANGELOG.md $(wildcard bsched/spec/*.h) \
+    bsched/CMakeLists.txt $(wildcard bsched/cmake/*.in) bsched/library.json $(wildcard bsched/zephyr/*) \
     bsched/proofs/ref/bsched_fig7.c bsched/proofs/ref/bsched_fig7.h bsched/proofs/ref/tests/test_bsched_fig7.c \
     bsched/tests/test_bsched.c bsched/tests/table2.h bsched/proofs/README.md bsched/CAVEATS.md \
     bsched/proofs/tools.txt bsched/proofs/tools_check.py bsched/proofs/proof_report.py \
@@ -36,6 +39,9 @@ $(DIST_TAR): $(DIST_FILES) $(DIST_REPORT) bsched/dist/Makefile bsched/dist/setup
 	@tar -cf - $(DIST_FILES) | tar -xf - -C $(BUILD)/dist/$(DIST_NAME)
 	@$(if $(DIST_REPORT),mkdir -p $(BUILD)/dist/$(DIST_NAME)/proof-report && cp $(DIST_REPORT) $(BUILD)/dist/$(DIST_NAME)/proof-report/)
 	@cp bsched/dist/Makefile bsched/dist/setup.sh $(BUILD)/dist/$(DIST_NAME)/
+	@# The exact sources the bundle's proofs run on, by digest, so a reviewer can
+	@# tell that a bsched.c in a firmware tree is the one proven (sha256sum -c).
+	@cd $(BUILD)/dist/$(DIST_NAME) && find bsched -type f | LC_ALL=C sort | xargs sha256sum > SOURCES.sha256
 	@sed 's/VERSION/$(DIST_VERSION)/' bsched/dist/README.md > $(BUILD)/dist/$(DIST_NAME)/README.md
 	@tar -czf $@ --owner=0 --group=0 --sort=name -C $(BUILD)/dist $(DIST_NAME)
 	@rm -rf $(BUILD)/dist/$(DIST_NAME)

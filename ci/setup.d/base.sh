@@ -1,5 +1,6 @@
-# Host compiler, make, cmocka for unit tests, Python with the pinned test tools.
-apt_install build-essential pkg-config libcmocka-dev python3 python3-venv
+# Host compiler, make, cmocka for unit tests, Python with the pinned test tools;
+# cmake and pkg-config for the consumers of bsched's package (suite bsched-package).
+apt_install build-essential cmake pkg-config libcmocka-dev python3 python3-venv
 # One environment per requirements file content, $BSCHED_TOOLS/venvs/HASH, shared
 # by the checkouts with the same pins: checkouts side by side with different pins
 # never replace each other's environment under a running test.
