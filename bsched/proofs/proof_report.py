@@ -7,9 +7,8 @@
 Reads what the proof jobs left (nothing is re-run):
   - WP: DIR/report.json (wp_report.py: every goal with its status and prover), DIR/wp.log
     (Frama-C's line per goal: the steps and time of the proof) and DIR/wp.json (Frama-C's
-    own totals). DIR is --wp, else the newer of BUILD/wp (make prove, whose log has no
-    steps for the goals its session's scripts prove) and BUILD/wp-replay (make wp-replay:
-    the provers' steps and times as the cache recorded them).
+    own totals). DIR is --wp, else BUILD/wp (make prove; its log has no steps for the
+    goals its session's scripts prove).
   - CBMC: BUILD/cbmc/<run>/ for every run named (result.txt, time.txt, command.txt, cbmc.log).
   - The negative checks: BUILD/wp/mutant/report.json (check-wp-negative) and
     BUILD/cbmc/<run>-mutant/ for each --cbmc-mutants run.
@@ -69,19 +68,12 @@ def wp_steps(log_text):
 
 def wp_section(build, wp_dir):
     if wp_dir is None:
-        # The newer of make prove's and make wp-replay's reports. make prove replays the
-        # session's scripts, and WP prints no time or steps for a script's proof; the
-        # replay prints both, as the cache recorded them.
-        found = [d for d in (os.path.join(build, "wp"), os.path.join(build, "wp-replay"))
-                 if os.path.exists(os.path.join(d, "report.json"))]
-        found.sort(key=lambda d: os.path.getmtime(os.path.join(d, "report.json")))
-        wp_dir = found[-1] if found else os.path.join(build, "wp")
+        wp_dir = os.path.join(build, "wp")
     report = load_json(os.path.join(wp_dir, "report.json"))
     if report is None:
         return {"dir": wp_dir, "source": "not run", "verdict": "NOT RUN", "goals": [], "goals_total": 0,
                 "by_status": {}}
-    source = "make wp-replay (proofs from the committed cache)" if wp_dir.rstrip("/").endswith("wp-replay") \
-        else "make prove (provers run)"
+    source = "make prove (provers run)"
     steps = wp_steps(read(os.path.join(wp_dir, "wp.log")))
     frama = load_json(os.path.join(wp_dir, "wp.json")) or {}
     main = frama.get("wp:global", {}).get("wp:main", {})
