@@ -10,7 +10,7 @@
  *   itc CH EDGES           tpu_itc_start           itcget CH -> ok COUNT    itcclr CH
  *   qdec A B               tpu_qdec_start          qpos A -> ok POS         qset A POS
  *   irq CH                 count CH's interrupts   irqget CH -> ok COUNT (tpu_irq_count too)
- *   irqwait CH MS          -> ok N T (CH's N interrupts while sleeping MS ms, T ticks)
+ *   irqwait CH MS          -> ok (CH's interrupts during MS ms)
  *   release CH             tpu_release
  *   motor M PERMILLE       motor_set               enc M -> ok POS SPEED POWER
  *   speed M V              motor_set_speed         off M   gains M KP KI
@@ -278,15 +278,10 @@ static void m_irqwait(NUMBERS_ONLY)
         return;
     }
     /* Interrupts of ch during MS ms, counted inside the firmware: the
-     * host's own pauses between commands do not enter the count. The ticks
-     * the sleep took go with it: a sleep of MS ms lasts one tick more or less
-     * depending on where in a tick it starts (and a tick still pending when
-     * it starts), which the host's timing decides, -icount or not. */
-    k_ticks_t t0 = k_ticks();
+     * host's own pauses between commands do not enter the count. */
     uint32_t before = irq_counts[ch];
     (void)k_sleep_ticks(k_ms_to_ticks((uint32_t)a[1]));
-    uint32_t counted = irq_counts[ch] - before;
-    k_printf("ok %lu %lu\n", (unsigned long)counted, (unsigned long)(k_ticks() - t0));
+    k_printf("ok %lu\n", (unsigned long)(irq_counts[ch] - before));
 }
 
 static void m_release(NUMBERS_ONLY)
