@@ -536,6 +536,20 @@ static int run_command(char *const argv[], const char *out, char *buf, size_t si
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/* The first line of `TOOL --version` into out, or "not found (TOOL)": the tool
+ * named in a certificate. */
+static void tool_version(char *tool, char *out, size_t size)
+{
+    char version[256];
+    char *argv[] = {tool, "--version", NULL};
+    if (run_command(argv, NULL, version, sizeof version, 60) == 0) {
+        version[strcspn(version, "\r\n")] = '\0';
+        snprintf(out, size, "%s", version);
+    } else {
+        snprintf(out, size, "not found (%s)", tool);
+    }
+}
+
 /* The sha256 of a file (sha256sum), or "" when it cannot be read. */
 static void file_sha256(const char *path, char *out, size_t size)
 {
@@ -668,7 +682,7 @@ static int certify_cbmc(const char *source, const uint8_t *set, size_t count, un
 {
     char dir[] = "/tmp/bsched-certify.XXXXXX";
     char harness[PATH_MAX], lib[PATH_MAX], ref[PATH_MAX], incl[PATH_MAX + 4], incl_ref[PATH_MAX + 8];
-    char cbmc[PATH_MAX], capacity[48], unwind[32], version[256];
+    char cbmc[PATH_MAX], capacity[48], unwind[32];
     size_t i;
     unsigned long success = 0, failure = 0, bound;
     int verified = 0, rc;
@@ -679,15 +693,7 @@ static int certify_cbmc(const char *source, const uint8_t *set, size_t count, un
     snprintf(ref, sizeof ref, "%s/proofs/ref/bsched_fig7.c", source);
     file_sha256(ref, c->fig7_sha, sizeof c->fig7_sha);
     find_cbmc(cbmc, sizeof cbmc);
-    {
-        char *argv[] = {cbmc, "--version", NULL};
-        if (run_command(argv, NULL, version, sizeof version, 60) == 0) {
-            version[strcspn(version, "\r\n")] = '\0';
-            snprintf(c->cbmc, sizeof c->cbmc, "%s", version);
-        } else {
-            snprintf(c->cbmc, sizeof c->cbmc, "not found (%s)", cbmc);
-        }
-    }
+    tool_version(cbmc, c->cbmc, sizeof c->cbmc);
     if (c->bsched_sha[0] == '\0' || c->fig7_sha[0] == '\0') {
         snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c or proofs/ref/bsched_fig7.c");
         fprintf(stderr, "bsched-plan: cannot read %s or %s\n", lib, ref);
@@ -893,7 +899,7 @@ static int certify_check(const char *source, const uint8_t *set, size_t count, l
 {
     char dir[] = "/tmp/bsched-check.XXXXXX";
     char driver[PATH_MAX], program[PATH_MAX], set_path[PATH_MAX], lib[PATH_MAX], incl[PATH_MAX + 4];
-    char capacity[48], version[256], line[512];
+    char capacity[48], line[512];
     const char *cc_env = getenv("CC");
     char cc[PATH_MAX];
     struct check_result result;
@@ -912,15 +918,7 @@ static int certify_check(const char *source, const uint8_t *set, size_t count, l
     snprintf(capacity, sizeof capacity, "-DBSCHED_MAX_PROCS=%lu", (unsigned long)count);
     snprintf(c->compile, sizeof c->compile, "%s -std=c99 -O2 %s", cc, capacity);
     snprintf(c->first_failure, sizeof c->first_failure, "none");
-    {
-        char *argv[] = {cc, "--version", NULL};
-        if (run_command(argv, NULL, version, sizeof version, 60) == 0) {
-            version[strcspn(version, "\r\n")] = '\0';
-            snprintf(c->compiler, sizeof c->compiler, "%s", version);
-        } else {
-            snprintf(c->compiler, sizeof c->compiler, "not found (%s)", cc);
-        }
-    }
+    tool_version(cc, c->compiler, sizeof c->compiler);
     if (c->bsched_sha[0] == '\0') {
         snprintf(c->verdict, sizeof c->verdict, "NOT CERTIFIED: no bsched.c");
         fprintf(stderr, "bsched-plan: cannot read %s/bsched.c\n", source);
