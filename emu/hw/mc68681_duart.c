@@ -104,7 +104,8 @@ typedef struct DuartChannel {
      * thread gets to it. */
     uint8_t hostq[HOST_RXQ];
     unsigned hostq_head, hostq_count;
-    uint32_t host_rx_taken;     /* properties received-a, received-b */
+    uint32_t host_rx_taken;     /* properties received-a, received-b (in radio
+                                 * mode, received-a counts the medium's bytes) */
 } DuartChannel;
 
 struct MC68681DuartState {
@@ -400,6 +401,7 @@ static void radio_receive(MC68681DuartState *s, const uint8_t *buf, int size)
     RadioState *r = &s->radio;
     int i;
 
+    s->ch[0].host_rx_taken += (uint32_t)size;
     for (i = 0; i < size; i++) {
         if (!r->msg_half) {
             r->msg_type = buf[i];

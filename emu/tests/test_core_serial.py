@@ -77,7 +77,10 @@ def test_sci_receive_and_rdrf_clearing(machine):
         assert not m.readw(SCSR) & RDRF
     assert bytes(got) == b"Qz"
     m.sci.write(b"k")                            # SCDR read without SCSR first:
-    time.sleep(0.1)                              # RDRF stays set
+    deadline = time.monotonic() + 10             # RDRF stays set (the scsr property
+    while not m.qom_get("/machine/qsm", "scsr") & RDRF:   # reads it without arming)
+        assert time.monotonic() < deadline, "the SCI did not take the character"
+        time.sleep(0.005)
     m.readw(SCDR)
     assert m.readw(SCSR) & RDRF
 

@@ -382,11 +382,19 @@ class Machine:
         of it into its host queue (its received-b count), not just the chardev.
         With the VM stopped meanwhile, the guest meets the whole of data at the
         same virtual times however slowly the I/O thread hands it over."""
-        before = self.qom_get("/machine/duart", "received-b")
-        self.console.write(data)
+        return self._write_taken(self.console, "received-b", data, timeout)
+
+    def radio_write_taken(self, data, timeout=10.0):
+        """The same for the radio port in radio-medium mode (received-a counts
+        the medium's bytes there): returns once the model has them all."""
+        return self._write_taken(self.radio, "received-a", data, timeout)
+
+    def _write_taken(self, port, counter, data, timeout):
+        before = self.qom_get("/machine/duart", counter)
+        port.write(data)
         deadline = time.monotonic() + timeout
-        while self.qom_get("/machine/duart", "received-b") - before < len(data):
-            assert time.monotonic() < deadline, "the DUART did not take all the data"
+        while self.qom_get("/machine/duart", counter) - before < len(data):
+            assert time.monotonic() < deadline, f"the DUART did not take all the data ({counter})"
             time.sleep(0.005)
         return before
 

@@ -72,6 +72,10 @@ number, receiver), so they do not depend on how the processes interleave.
 Control socket SOCKET.ctl, one line per command:
     range A B off|on      take the pair out of range / back in range
     stats                 one line of counters (key=value)
+    station N             "received=R delivered=D" for the station that said
+                          hello N (messages taken from it, messages written to
+                          it), "none" if it is not here: what a test waits for
+                          instead of sleeping (net/tests/target/medium_station.py)
 A station that leaves, stalls or sends garbage never blocks the others: writes
 never wait (a station whose backlog passes 1 MiB is dropped).
 """
@@ -112,6 +116,8 @@ class Station:
         self.backlog = deque()        # paced station: (kind, value) not yet played
         self.credit_ns = 0            # paced station: virtual time owed to its backlog
         self.clock_ns = 0             # paced station: virtual time not yet told (05 k)
+        self.received = 0             # messages taken from it (the control's "station N")
+        self.delivered = 0            # messages written to it
 
     @property
     def name(self):
@@ -135,6 +141,7 @@ class Station:
             self.writer.close()
             return
         self.writer.write(msg)
+        self.delivered += len(msg) // 2
 
 
 class Medium:
@@ -350,6 +357,7 @@ class Medium:
                 usable = len(pending) & ~1
                 for i in range(0, usable, 2):
                     self.message(st, pending[i], pending[i + 1])
+                    st.received += 1
                 pending = pending[usable:]
         except (ConnectionError, OSError):
             pass
@@ -374,9 +382,13 @@ class Medium:
                 if not line:
                     break
                 words = line.decode(errors="replace").split()
-                reply = "error: commands are 'range A B on|off' and 'stats'"
+                reply = "error: commands are 'range A B on|off', 'stats' and 'station N'"
                 if words == ["stats"]:
                     reply = self.stats_line()
+                elif len(words) == 2 and words[0] == "station" and words[1].isdigit():
+                    here = [st for st in self.stations if st.number == int(words[1])]
+                    reply = (f"received={here[-1].received} delivered={here[-1].delivered}"
+                             if here else "none")
                 elif len(words) == 4 and words[0] == "range" and words[3] in ("on", "off"):
                     try:
                         pair = frozenset((int(words[1]), int(words[2])))

@@ -1,7 +1,5 @@
 """robocube_emu.radio_medium alone, with raw stations: carrier, hearing rules,
 collisions, deterministic faults, stations that leave."""
-import time
-
 from medium_station import MSG_PACE, Station
 
 
@@ -10,11 +8,11 @@ def test_hearing_carrier_and_loopback(medium_factory):
     a, b, c = (Station(m.sock, n) for n in (1, 2, 3))
     b.selects(1)                                 # RX
     c.selects(3)                                 # loop-back test mode: hears nothing
-    time.sleep(0.1)                              # (sockets are served independently)
+    b.settle(), c.settle()                       # (sockets are served independently)
     a.selects(2)                                 # TX: carrier for the others
     a.send(b"hello")
     heard_b, carrier_b = b.drain()
-    heard_c, _ = c.drain(0)
+    heard_c, _ = c.drain()
     assert heard_b == b"hello" and carrier_b == 1
     assert heard_c == b""
     a.selects(1)
@@ -26,7 +24,7 @@ def test_collision_garbles_overlap(medium_factory):
     a, b, r = (Station(m.sock, n) for n in (1, 2, 3))
     r.selects(1)
     b.selects(2)                                 # both keyed: they collide
-    time.sleep(0.1)
+    r.settle(), b.settle()
     a.selects(2)
     a.send(b"A" * 50)
     heard, _ = r.drain()
@@ -38,13 +36,13 @@ def run_faulty(medium_factory, seed):
     m = medium_factory(seed=seed, loss=0.3, corrupt=0.3, noise=0.3)
     a, r = Station(m.sock, 1), Station(m.sock, 2)
     r.selects(1)
-    time.sleep(0.1)
+    r.settle()
     out = []
     for k in range(20):
         a.selects(2)
         a.send(bytes(range(k, k + 20)))
         a.selects(1)
-        out.append(r.drain(0.05)[0])
+        out.append(r.drain()[0])
     out.append(r.drain()[0])
     return b"|".join(out), m.stats()
 
@@ -64,7 +62,7 @@ def test_out_of_range_and_leaving_station(medium_factory):
     m = medium_factory()
     a, b = Station(m.sock, 1), Station(m.sock, 2)
     b.selects(1)
-    time.sleep(0.1)
+    b.settle()
     assert m.control("range 1 2 off") == "ok"
     a.selects(2)
     a.send(b"far")
@@ -72,10 +70,9 @@ def test_out_of_range_and_leaving_station(medium_factory):
     assert heard == b"" and not carrier
     assert m.control("range 1 2 on") == "ok"
     assert b.drain()[1] == 1                     # in range again: its carrier
-    a.s.close()                                  # leaves while keyed
+    a.close()                                    # leaves while keyed
     assert b.drain()[1] == 0                     # carrier gone, medium alive
     c = Station(m.sock, 3)
-    time.sleep(0.1)
     c.selects(2)
     c.send(b"ok")
     assert b.drain()[0] == b"ok"
@@ -94,7 +91,7 @@ def test_host_peer_is_paced_in_the_boards_virtual_time(medium_factory):
     peer.selects(2)
     peer.send(frame)
     peer.selects(1)
-    time.sleep(0.3)                              # all of it queued at the medium
+    peer.settle()                                # all of it queued at the medium
     heard, heard_at, carrier_rounds = bytearray(), [], set()
     carrier = 0
     for rnd in range(1, 41):
@@ -118,7 +115,7 @@ def test_host_peer_alone_is_not_paced(medium_factory):
     listener, peer = Station(m.sock, 1), Station(m.sock, 9)
     listener.selects(1)
     peer.pace(19200)
-    time.sleep(0.1)
+    listener.settle(), peer.settle()
     peer.selects(2)
     peer.send(b"at once")
     peer.selects(1)

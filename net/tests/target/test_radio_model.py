@@ -74,14 +74,12 @@ def wait_set(m, addr, mask, step_ns=CHAR_NS):
 
 def test_reception_paced_and_gated_by_rx_select(radio):
     messages(radio, 2)
-    radio.radio.write(bytes((0, 0x61)))         # RX select off: dropped
-    time.sleep(0.2)
+    radio.radio_write_taken(bytes((0, 0x61)))   # RX select off: dropped
     radio.clock_step(3 * CHAR_NS)
     assert radio.readb(SRA) & RXRDY == 0
     radio.writeb(OPR_SET, OP_RX)
     messages(radio, 1)
-    radio.radio.write(bytes((0, 0x62, 0, 0x63)))
-    time.sleep(0.2)                             # both queued in the model now
+    radio.radio_write_taken(bytes((0, 0x62, 0, 0x63)))   # both queued in the model now
     radio.clock_step(CHAR_NS - 1000)
     assert radio.readb(SRA) & RXRDY == 0        # the first is still arriving
     assert radio.readb(IP) & 1 == 0             # carrier detect while characters arrive
