@@ -6,7 +6,7 @@
 #include "drivers/bio.h"
 #include "drivers/drv_err.h"
 #include "drivers/fastout.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 

@@ -23,7 +23,7 @@
 #include "bsched.h"
 #include "kernel.h"
 #include "k_bsched.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "pdl/pdl_board.h"
 
 /* PDL_PORTS_EXTERNAL: another board's ports (boards/NAME/ defines

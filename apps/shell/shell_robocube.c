@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/board_io.h"
 #include "drivers/cmd.h"
 #include "drivers/drv_err.h"

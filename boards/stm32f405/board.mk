@@ -9,8 +9,8 @@
 #   make check-stm32f405-firmware             table1 (Table 2) and the fault report
 #
 # An image builds for this board when its sources include none of the
-# RoboCube's hardware headers (the drivers besides board.h and led.h, the
-# CPU32 headers); otherwise make says which it needs and stops.
+# RoboCube's hardware headers (the drivers besides those below, the RoboCube's
+# board folder, the CPU32 headers); otherwise make says which it needs and stops.
 
 STM32_BUILD   := $(BUILD)/stm32f405
 ARM_CC        ?= arm-none-eabi-gcc
@@ -37,21 +37,21 @@ STM32_ICOUNT  := shift=3,sleep=off
 STM32_QEMU_ARGS := -M $(STM32_MACHINE) -display none -monitor none -serial stdio \
                    -semihosting-config enable=on,target=native
 
-# The drivers that need nothing of the RoboCube: the board interface's shared
-# part, console line input and the command parser (an image links only what
-# it calls: --gc-sections).
-STM32_DRIVER_SRCS := drivers/board_common.c drivers/console_in.c drivers/line_edit.c \
+# The drivers that need nothing of the RoboCube: console line input and the
+# command parser (an image links only what it calls: --gc-sections).
+STM32_DRIVER_SRCS := drivers/console_in.c drivers/line_edit.c \
                      drivers/cmd.c drivers/drv_err.c
-# The port, the board, the kernel and the libraries every image links,
+# The port, the board (with the board interface's shared part,
+# boards/common/), the kernel and the libraries every image links,
 # compiled per image at its tick rate.
 STM32_BASE_SRCS := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c \
                    kernel/arch/armv7m/k_arch_armv7m.c kernel/arch/armv7m/switch.S \
                    boards/stm32f405/vectors.c boards/stm32f405/k_board_stm32f405.c \
-                   boards/stm32f405/board.c kernel/lib/kprintf.c kernel/lib/kstring.c \
+                   boards/stm32f405/board.c boards/common/board_common.c kernel/lib/kprintf.c kernel/lib/kstring.c \
                    bsched/bsched.c $(K_CORE_SRCS) $(STM32_DRIVER_SRCS)
 
 # Headers that name RoboCube hardware: an image including one needs that board.
-STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h $(STM32_DRIVER_SRCS:.c=.h),$(wildcard drivers/*.h)) \
+STM32_ROBOCUBE_ONLY := $(filter-out $(STM32_DRIVER_SRCS:.c=.h),$(wildcard drivers/*.h)) \
                        $(wildcard boards/robocube/*.h) mc68332.h cpu.h
 # An image's sources on this board: NAME_SRCS_stm32f405 where its app.mk gives
 # them (an image with a part per board), else NAME_SRCS.

@@ -4,10 +4,10 @@
 
 #include <stdint.h>
 
-#include "drivers/board.h"
+#include "boards/include/board.h"
 
 /* The console's receiver on USART1, the board's side of
- * board_console_rx_start (drivers/board.h): calls fn(byte, flags) in the
+ * board_console_rx_start (boards/include/board.h): calls fn(byte, flags) in the
  * console's interrupt for every received byte; when fn returns 0, reception
  * pauses (the next byte waits in the USART) until
  * stm32f405_console_rx_resume. NULL: reception off. Returns 0, or -1 when

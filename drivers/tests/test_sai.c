@@ -17,7 +17,7 @@
 #include "drivers/binin.h"
 #include "drivers/bio.h"
 #include "drivers/fastout.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 

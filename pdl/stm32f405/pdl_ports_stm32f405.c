@@ -15,7 +15,7 @@
  *                  reads stm32f405_sim_io.binin (0 unless the image sets it).
  */
 #include "pdl/pdl_internal.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "boards/stm32f405/stm32f405.h"
 #include "boards/stm32f405/board_stm32f405.h"
 
