@@ -177,11 +177,11 @@ $(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-pdl,$(STM32_PDL_TEST_ELF),\
     boards/stm32f405/tests/pdl_ports.c $(APP_BOOT_SRC) $(STM32_PDL_SRCS),\
     -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"' -DPDL_PORTS_EXTERNAL))
 
-# The bench image (boards/stm32f405/bench_armv7m.c): bsched.c and the Fig. 7
+# The bench image (bench/bench_armv7m.c): bsched.c and the Fig. 7
 # reference at BSCHED_MAX_PROCS = $(BENCH_PROCS), as the CPU32's bench image.
 STM32_BENCH_DIR  := $(BENCH_DIR)/stm32f405
 STM32_BENCH_ELF  := $(STM32_BENCH_DIR)/bench-armv7m.elf
-STM32_BENCH_SRCS := boards/stm32f405/bench_armv7m.c bsched/proofs/ref/bsched_fig7.c
+STM32_BENCH_SRCS := bench/bench_armv7m.c bsched/proofs/ref/bsched_fig7.c
 STM32_BENCH_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=%,$(STM32_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
                     -I$(ROOT)/bsched/proofs/ref -I$(ROOT)/bench -DBENCH_CYCLES=$(BENCH_CYCLES)u
 STM32_BENCH_OBJS := $(patsubst %,$(STM32_BENCH_DIR)/%.o,$(STM32_BENCH_SRCS) $(STM32_BASE_SRCS))
