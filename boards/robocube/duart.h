@@ -21,6 +21,11 @@
 #define DUART_INT_BREAKB   0x40u
 #define DUART_INT_IPCHANGE 0x80u
 
+/* The DUART's interrupt: the vector the chip gives (written to IVR) and the
+ * level the board wires it to. */
+#define DUART_IRQ_VECTOR 72u
+#define DUART_IRQ_LEVEL   5u
+
 /* Handlers the DUART interrupt can call, besides the console's. */
 #define DUART_MAX_HANDLERS 4u
 

@@ -217,8 +217,8 @@ int k_board_init(void)
         for (i = 0; i < DUART_MAX_HANDLERS; i++)
             k_duart_handlers[i].fn = NULL;
     }
-    DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
-    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK ||
+    DUART_REG(DUART_IVR) = (uint8_t)DUART_IRQ_VECTOR;
+    if (k_irq_register(DUART_IRQ_VECTOR, DUART_IRQ_LEVEL, k_duart_isr, NULL) != K_OK ||
         k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     k_console_register(k_board_console_write, k_board_console_write_sync);
