@@ -50,6 +50,7 @@ APP         ?= $(APP_DEFAULT)
 # and the board's interface (board, FW_BOARD_LIB_SRCS: boards/robocube/board.mk).
 APP_LIB_DIRS := board drivers net pdl posix
 APP_LIB_SRCS_board := $(FW_BOARD_LIB_SRCS)
+APP_LIB_SRCS_pdl := $(wildcard pdl/*.c) $(FW_PDL_PORTS_SRCS)
 # Already in the firmware base objects or the kernel's own source list; the
 # main-thread start-up is linked by name (NAME_BOOT), never from the archive.
 APP_BOOT_SRC := drivers/board_main.c

@@ -62,9 +62,10 @@ stm32_includes = $(shell grep -lF '$(stm32_hash)include "$(2)' $(call stm32_srcs
 stm32_needs = $(strip $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(call stm32_includes,$(1),$(h)"),$(h)))) \
                   $(if $(call stm32_includes,$(1),net/),net/ (the radio on the DUART)) \
                   $(if $($(1)_RUNNER),its runner (the RoboCube world co-simulation)))
-# The PDL runtime with this board's ports, for images that include pdl/.
+# The PDL runtime with this board's ports, for images that include pdl/: the
+# board's own port access (ports.c), which PDL reaches through pdl/ports/board.c.
 STM32_PDL_SRCS := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c pdl/pdl_board.c \
-                  pdl/stm32f405/pdl_ports_stm32f405.c
+                  pdl/ports/board.c boards/stm32f405/ports.c
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
@@ -97,7 +98,7 @@ define stm32_app_template
 $$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$(call stm32_srcs,$(1)) \
     $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) \
     $$(if $$(call stm32_includes,$(1),pdl/),$$(STM32_PDL_SRCS)),\
-    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' -DPDL_PORTS_EXTERNAL $$($(1)_CFLAGS)))
+    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)))
 endef
 $(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
 
@@ -175,7 +176,7 @@ check-stm32f405-firmware:
 STM32_PDL_TEST_ELF := $(STM32_BUILD)/tests/pdl-ports.elf
 $(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-pdl,$(STM32_PDL_TEST_ELF),\
     boards/stm32f405/tests/pdl_ports.c $(APP_BOOT_SRC) $(STM32_PDL_SRCS),\
-    -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"' -DPDL_PORTS_EXTERNAL))
+    -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"'))
 
 # The bench image (bench/bench_armv7m.c): bsched.c and the Fig. 7
 # reference at BSCHED_MAX_PROCS = $(BENCH_PROCS), as the CPU32's bench image.

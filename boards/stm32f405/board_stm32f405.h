@@ -15,7 +15,7 @@
 int stm32f405_console_rx_attach(board_console_rx_sink fn);
 void stm32f405_console_rx_resume(void);
 
-/* The simulated part of the PDL ports (pdl/stm32f405/pdl_ports_stm32f405.c). */
+/* The simulated part of the board's ports (ports.c). */
 struct stm32f405_sim_io {
     uint16_t bio;            /* PDL_BIO_OUT writes, PDL_BIO_IN reads */
     uint8_t binin;           /* PDL_BINARY_IN reads */
