@@ -1,13 +1,13 @@
 /*
  * Shared services of the MC68681 DUART. One chip serves several drivers: the
- * console (channel B, in k_board_robocube.c), the radio (channel A, net/), the
+ * console (channel B, in k_board_robocube.c), the radio (channel A, radio.c), the
  * binary inputs (IP1-IP5) and carrier detect (IP0), and the output port
  * (motor direction OP2-OP7, radio enables OP0/OP1). Its interrupt mask (IMR)
  * and the auxiliary control register (ACR) are write-only and its single
  * interrupt is shared, so those live here, once, and drivers attach to them.
  */
-#ifndef DRIVERS_DUART_H
-#define DRIVERS_DUART_H
+#ifndef ROBOCUBE_DUART_H
+#define ROBOCUBE_DUART_H
 
 #include <stdint.h>
 
@@ -62,4 +62,4 @@ void duart_acr_ipchange(uint8_t ip_mask);
  * is already in use (ACR bits 6-4 not 000, e.g. the 57600 console's clock). */
 int duart_ct_baud_clock(uint16_t preload);
 
-#endif /* DRIVERS_DUART_H */
+#endif /* ROBOCUBE_DUART_H */
