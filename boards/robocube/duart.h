@@ -11,6 +11,8 @@
 
 #include <stdint.h>
 
+#include "boards/include/board_io.h"
+
 /* ISR / IMR bits. */
 #define DUART_INT_TXRDYA   0x01u
 #define DUART_INT_RXRDYA   0x02u
@@ -45,10 +47,9 @@ int duart_irq_attach(uint8_t mask, duart_irq_handler fn, void *arg);
 void duart_imr_update(uint8_t set, uint8_t clear);
 uint8_t duart_imr(void);
 
-/* Output port: bit n set = OPn asserted (pin low), as OPR-set/OPR-reset do.
- * Each call is one register write, so drivers owning different bits never race. */
-void duart_op_assert(uint8_t bits);
-void duart_op_negate(uint8_t bits);
+/* Output port: bit n set = OPn asserted (pin low), as OPR-set/OPR-reset do:
+ * the board's output lines, board_outputs_assert and _negate
+ * (boards/include/board_io.h). */
 uint8_t duart_op(void);   /* the shadow of OPR (the register is write-only) */
 
 /* ACR bits 3-0 enable the input-change interrupt for IP3-IP0 (IPCR). ACR's

@@ -117,7 +117,7 @@ uint8_t duart_imr(void)
     return k_duart_imr;
 }
 
-void duart_op_assert(uint8_t bits)
+void board_outputs_assert(uint8_t bits)
 {
     uint32_t irq = k_arch_irq_save();
     k_duart_opr = (uint8_t)(k_duart_opr | bits);
@@ -125,7 +125,7 @@ void duart_op_assert(uint8_t bits)
     k_arch_irq_restore(irq);
 }
 
-void duart_op_negate(uint8_t bits)
+void board_outputs_negate(uint8_t bits)
 {
     uint32_t irq = k_arch_irq_save();
     k_duart_opr = (uint8_t)(k_duart_opr & (uint8_t)~bits);

@@ -48,8 +48,8 @@ static void radio_tx_chars(void)
         }
         /* The last byte is out: back to receive. */
         duart_imr_update(0, DUART_INT_TXRDYA);
-        duart_op_negate(RADIO_OP_TX);
-        duart_op_assert(RADIO_OP_RX);
+        board_outputs_negate(RADIO_OP_TX);
+        board_outputs_assert(RADIO_OP_RX);
         break;
     }
 }
@@ -95,8 +95,8 @@ int board_radio_start(board_radio_rx_fn rx, board_radio_tx_fn tx)
     DUART_REG(DUART_MRA) = 0x07u;       /* normal mode, 1 stop bit */
     DUART_REG(DUART_CSRA) = radio_csr();
     DUART_REG(DUART_CRA) = DUART_CR_RX_ENABLE | DUART_CR_TX_ENABLE;
-    duart_op_negate(RADIO_OP_TX);
-    duart_op_assert(RADIO_OP_RX);
+    board_outputs_negate(RADIO_OP_TX);
+    board_outputs_assert(RADIO_OP_RX);
     if (duart_irq_attach(DUART_INT_RXRDYA | DUART_INT_TXRDYA, radio_isr, NULL) != 0)
         return -1;
     duart_imr_update(DUART_INT_RXRDYA, 0);
@@ -105,7 +105,7 @@ int board_radio_start(board_radio_rx_fn rx, board_radio_tx_fn tx)
 
 void board_radio_transmit(void)
 {
-    duart_op_negate(RADIO_OP_RX);
-    duart_op_assert(RADIO_OP_TX);
+    board_outputs_negate(RADIO_OP_RX);
+    board_outputs_assert(RADIO_OP_TX);
     duart_imr_update(DUART_INT_TXRDYA, 0);
 }
