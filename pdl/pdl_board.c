@@ -11,8 +11,9 @@
  * pdl_core's (bsched.c's plan of the PDL set).
  *
  * A cycle: read the sensors (pdl_platform_read_inputs), run the due
- * processes, commit, write the changed actuators. The cycle period is a whole number of kernel ticks (f0 =
- * K_TICK_HZ / period; 1 tick = 1024 Hz at the default tick). Overruns are
+ * processes, commit, write the changed actuators. The cycle period is a
+ * whole number of kernel ticks (f0 = K_TICK_HZ / period; 1 tick = 1024 Hz at
+ * the default tick). Overruns are
  * counted by the kernel thread and reported on the console by its reporter
  * thread; pdl_get_stats() returns them.
  *
