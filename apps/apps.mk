@@ -6,9 +6,10 @@
 #                                or run the app's host runner if it names one
 #
 # An image is apps/NAME/*.c, linked with the firmware base objects (startup,
-# console, PIT, LED, bsched.c: boards/robocube/board.mk), the C library and the CPU32
-# compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel and the
-# libraries drivers/, net/, pdl/ and posix/ (every *.c directly in those folders; host
+# console, PIT, bsched.c: boards/robocube/board.mk), the C library and the CPU32
+# compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel, the board's
+# side of boards/include/ (start-up, LED: FW_BOARD_LIB_SRCS) and the libraries
+# drivers/, net/, pdl/ and posix/ (every *.c directly in those folders; host
 # code and tests live in their subfolders). The kernel and the libraries are
 # compiled per image at the image's tick rate and linked as archives, so an
 # image carries only the modules it calls. apps/NAME/app.mk may set:
@@ -45,8 +46,11 @@ APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk)))
 # on another board, whose hardware it lacks, table1 (Table 2 from bsched.c).
 APP_DEFAULT := $(if $(filter-out robocube,$(or $(BOARD),robocube)),table1,ecosystem)
 APP         ?= $(APP_DEFAULT)
-# Libraries every image may link: the target sources directly in these folders.
-APP_LIB_DIRS := drivers net pdl posix
+# Libraries every image may link: the target sources directly in these folders,
+# and the board's interface (board, FW_BOARD_LIB_SRCS: boards/robocube/board.mk).
+APP_LIB_DIRS := board drivers net pdl posix
+APP_LIB_SRCS_board := $(FW_BOARD_LIB_SRCS)
+APP_LIB_SRCS_pdl := $(wildcard pdl/*.c) $(FW_PDL_PORTS_SRCS)
 # Already in the firmware base objects or the kernel's own source list; the
 # main-thread start-up is linked by name (NAME_BOOT), never from the archive.
 APP_BOOT_SRC := drivers/board_main.c
@@ -57,7 +61,7 @@ APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS) $(APP_BOOT_SRC)
 
 include $(wildcard apps/*/app.mk)
 
-app_lib_srcs = $(filter-out $(APP_LIB_EXCLUDE),$(wildcard $(1)/*.c))
+app_lib_srcs = $(filter-out $(APP_LIB_EXCLUDE),$(or $(APP_LIB_SRCS_$(1)),$(wildcard $(1)/*.c)))
 
 # $(call app_lib_template,NAME,DIR): build/firmware/NAME/libDIR.a
 define app_lib_template

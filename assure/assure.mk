@@ -61,7 +61,7 @@ misra check-misra:
 	@$(SETUP) assure
 	@$(ASSURE_PY)/misra.py --deviations assure/misra-deviations.txt -I bsched --suite misra bsched; rc=$$?; \
 	echo "== other parts (counts only, no deviation list yet):"; \
-	for d in kernel boards/robocube drivers net pdl; do $(ASSURE_PY)/misra.py --count $(MISRA_INCLUDES) $$d; done; \
+	for d in kernel boards/robocube boards/common drivers net pdl; do $(ASSURE_PY)/misra.py --count $(MISRA_INCLUDES) $$d; done; \
 	exit $$rc
 
 # ---------------------------------------------------------------- static analysis

@@ -6,7 +6,13 @@ It reads every #include "..." of the C and assembly sources and every import of
 the Python files, resolves each to a file of this repository and so to the
 top-level folder that holds it, and fails on any dependency the graph below
 does not allow: an upward one, or one that closes a circle. The graph is
-written here and only here.
+written here and only here. A quoted include is looked for as the compiler
+does: in the including file's folder, then in the include folders (-I,
+-isystem) the make files name (read from them, not listed here), and the
+root; one found nowhere fails too (only FETCHED libraries are outside). Before
+the tree, the check runs on three small trees of its own: one with an
+unresolvable include and one with an upward include must fail, a clean one
+must pass.
 
 What is not read: tests (a folder's tests/ may use the layers above the code
 they test, e.g. a kernel test image on the board), emu/hw (QEMU's own device
@@ -48,17 +54,10 @@ ALLOWED = {
     "ci": set(),
 }
 
-# The headers a lower folder may include from a higher one: drivers/board.h and
-# drivers/led.h are the board API the images call (board_start, the board's
-# name and clock, its LED); every board implements them, the RoboCube in
-# drivers/, another board in its own folder (boards/stm32f405/board.c). The
-# interface, not the drivers.
-INTERFACES = {("boards", "drivers/board.h"), ("boards", "drivers/led.h")}
-
-# Where a quoted include is looked for after the including file's folder and
-# the root: the -I folders of the make files.
-INCLUDE_DIRS = ["kernel/include", "kernel", "kernel/arch/cpu32", "bsched", "bsched/proofs/ref",
-                "net", "apps/ecosystem"]
+# Quoted includes of a library that ci/setup fetches into build/ (not part of
+# the repository, so no layer): the prefix and the folder the make files must
+# name as an include folder for it.
+FETCHED = {"mbedtls/": "build/mbedtls/include"}
 SKIP_DIRS = {"build", ".git", "__pycache__", "node_modules"}
 C_EXT = (".c", ".h", ".S")
 INCLUDE_RE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
@@ -92,11 +91,67 @@ def files(root):
                 yield rel
 
 
-def resolve_include(root, rel, name):
-    for base in [os.path.dirname(rel), ""] + INCLUDE_DIRS:
+MAKE_VAR_RE = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_]*)\s*[:?]?=\s*(.*?)\s*$", re.M)
+INCLUDE_OPT_RE = re.compile(r"(?:-I|-isystem)\s*([^\s'\";,]+)")
+THIS_MAKEFILE = "$(abspath $(dir $(lastword $(MAKEFILE_LIST))))"
+
+
+def make_files(root):
+    for rel in files(root):
+        base = os.path.basename(rel)
+        if rel.endswith(".mk") or base == "Makefile" or base.startswith("Makefile."):
+            yield rel
+    if os.path.isfile(os.path.join(root, "Makefile")):
+        yield "Makefile"
+
+
+def include_dirs(root):
+    """The folders the make files pass as -I or -isystem, relative to root, in
+    no particular order: $(ROOT) and the variables set to paths under it are
+    expanded (a variable set to the make file's own folder, too). A folder
+    of the repository that does not exist, or a make variable that is not a
+    path, is no include folder; one under build/ is (a fetched library's)."""
+    texts = {}
+    for rel in make_files(root):
+        with open(os.path.join(root, rel), errors="replace") as f:
+            texts[rel] = f.read().replace("$$(", "$(")
+    shared = {"ROOT": ".", "CURDIR": "."}
+    for text in texts.values():
+        for name, value in MAKE_VAR_RE.findall(text):
+            shared.setdefault(name, value)
+    found = set()
+    for rel, text in texts.items():
+        values = dict(shared)
+        for name, value in MAKE_VAR_RE.findall(text):
+            if value == THIS_MAKEFILE:
+                values[name] = os.path.dirname(rel)
+        for opt in INCLUDE_OPT_RE.findall(text):
+            path = opt
+            while path.endswith(")") and path.count(")") > path.count("("):
+                path = path[:-1]
+            for _ in range(8):
+                m = re.search(r"\$\(([A-Za-z_][A-Za-z0-9_]*)\)", path)
+                if not m or m.group(1) not in values:
+                    break
+                path = path[:m.start()] + values[m.group(1)] + path[m.end():]
+            if "$" in path or os.path.isabs(path):
+                continue
+            path = os.path.normpath(path)
+            if path.startswith("build/") or os.path.isdir(os.path.join(root, path)):
+                found.add(path)
+    return found
+
+
+def resolve_include(root, rel, name, dirs):
+    """The repository file a quoted include names; FETCHED for a fetched
+    library's header; None when it is nowhere."""
+    for base in [os.path.dirname(rel)] + sorted(dirs - {"."}) + [""]:
         cand = os.path.normpath(os.path.join(base, name))
-        if os.path.isfile(os.path.join(root, cand)):
+        if os.path.isfile(os.path.join(root, cand)) and not cand.startswith("build/"):
             return cand
+    for prefix, folder in FETCHED.items():
+        if name.startswith(prefix) and folder in dirs:
+            return "FETCHED"
     return None
 
 
@@ -124,8 +179,10 @@ def resolve_import(rel, name, mods):
 
 
 def dependencies(root):
-    """(from file, to file) for every include and import that crosses top-level folders."""
+    """(from file, to file) for every include and import that crosses top-level
+    folders; (from file, None, why) for one that cannot be resolved."""
     mods = python_modules(root)
+    dirs = include_dirs(root)
     for rel in files(root):
         if skipped(rel):
             continue
@@ -133,7 +190,12 @@ def dependencies(root):
         if rel.endswith(C_EXT):
             with open(os.path.join(root, rel), errors="replace") as f:
                 text = f.read()
-            targets = [resolve_include(root, rel, n) for n in INCLUDE_RE.findall(text)]
+            for n in INCLUDE_RE.findall(text):
+                t = resolve_include(root, rel, n, dirs)
+                if t is None:
+                    yield rel, None, 'includes "%s", which is in no include folder of the make files' % n
+                elif t != "FETCHED":
+                    targets.append(t)
         elif rel.endswith(".py"):
             with open(os.path.join(root, rel)) as f:
                 try:
@@ -162,8 +224,6 @@ def check(root):
             failures.append("%s %s" % (src, err))
             continue
         a, b = src.split("/")[0], dst.split("/")[0]
-        if (a, dst) in INTERFACES:
-            continue
         edges.setdefault((a, b), (src, dst))
     for (a, b), (src, dst) in sorted(edges.items()):
         if a not in ALLOWED:
@@ -177,6 +237,42 @@ def check(root):
     return passed, failures, edges
 
 
+# The check on trees of its own (name, files added to the base, how the one
+# failure it must report begins, None: it must pass): each tree is the three lowest
+# layers, kernel/include an include folder of its Makefile.
+SELF_TEST_BASE = {
+    "Makefile": "CFLAGS := -I$(ROOT) -I$(ROOT)/kernel/include\n",
+    "bsched/bsched.h": "",
+    "kernel/include/kernel.h": '#include "bsched/bsched.h"\n',
+    "boards/board.c": '#include "kernel.h"\n',
+}
+SELF_TESTS = [
+    ("a clean tree passes", {}, None),
+    ("an include found nowhere fails", {"boards/led.c": '#include "led_regs.h"\n'},
+     'boards/led.c includes "led_regs.h", which is in no include folder'),
+    ("an upward include fails", {"kernel/k_tick.c": '#include "boards/board.c"\n'},
+     "kernel/k_tick.c -> boards/board.c: circular dependency kernel -> boards"),
+]
+
+
+def self_test():
+    """(passed, failures) of the check on SELF_TESTS."""
+    import tempfile
+    passed, failures = 0, []
+    for name, extra, expected in SELF_TESTS:
+        with tempfile.TemporaryDirectory() as root:
+            for rel, text in list(SELF_TEST_BASE.items()) + list(extra.items()):
+                os.makedirs(os.path.join(root, os.path.dirname(rel)), exist_ok=True)
+                with open(os.path.join(root, rel), "w") as f:
+                    f.write(text)
+            _, bad, _ = check(root)
+        if (not bad and expected is None) or (len(bad) == 1 and expected and bad[0].startswith(expected)):
+            passed += 1
+        else:
+            failures.append("self-test: %s: %s" % (name, "; ".join(bad) or "it passed"))
+    return passed, failures
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--root", default=os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -184,12 +280,16 @@ def main():
     a = ap.parse_args()
     if not os.path.isdir(a.root):
         ap.error("--root %s: no such folder" % a.root)
-    passed, failures, edges = check(a.root)
+    passed, failures = self_test()
+    tree_passed, tree_failures, edges = check(a.root)
+    passed += tree_passed
+    failures += tree_failures
     for (x, y), (src, dst) in sorted(edges.items()):
         print("  %-7s -> %-7s e.g. %s -> %s" % (x, y, src, dst))
     for f in failures:
         print("FAILED: " + f)
-    print("layering: %d passed, %d failed (%d folder-to-folder dependencies)" % (passed, len(failures), len(edges)))
+    print("layering: %d passed, %d failed (%d folder-to-folder dependencies, %d self-tests)"
+          % (passed, len(failures), len(edges), len(SELF_TESTS)))
     if a.results:
         os.makedirs(os.path.dirname(a.results), exist_ok=True)
         with open(a.results, "w") as f:

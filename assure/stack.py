@@ -469,6 +469,7 @@ def main():
     a = ap.parse_args()
     headers = glob.glob(os.path.join(ROOT, 'kernel/include/*.h')) + glob.glob(os.path.join(ROOT, 'kernel/*.h')) + \
         glob.glob(os.path.join(ROOT, 'kernel/arch/cpu32/*.h')) + glob.glob(os.path.join(ROOT, 'boards/robocube/*.h')) + \
+        glob.glob(os.path.join(ROOT, 'boards/include/*.h')) + \
         glob.glob(os.path.join(ROOT, 'drivers/*.h')) + glob.glob(os.path.join(ROOT, 'posix/include/*.h'))
     ok = bad = known = at_risk = 0
     known_list = {}
@@ -497,7 +498,7 @@ def main():
         linked = elf_functions(elf)
         sources = sorted(set(glob.glob(os.path.join(ROOT, 'apps', app, '*.c')) +
                              glob.glob(os.path.join(ROOT, 'kernel', '*.c')) +
-                             [f for d in ('boards/robocube', 'drivers', 'net', 'pdl', 'posix')
+                             [f for d in ('boards/robocube', 'boards/common', 'drivers', 'net', 'pdl', 'pdl/ports', 'posix')
                               for f in glob.glob(os.path.join(ROOT, d, '*.c'))]))
         defs = c_defines(headers + sources + glob.glob(os.path.join(ROOT, 'apps', app, '*.h')))
         threads = find_threads(sources + headers, defs, linked)

@@ -1,6 +1,6 @@
 /*
  * The body of the two bench images, bench/bench_cpu32.c (the RoboCube's
- * CPU32) and boards/stm32f405/bench_armv7m.c (the Cortex-M4): every case of
+ * CPU32) and bench/bench_armv7m.c (the Cortex-M4): every case of
  * bench_core.h in five phases, each ended by bench_mark(), which each image
  * defines for its CPU (bench.py finds the phase boundaries by its first
  * instruction): bsched_init, bsched_fig7_start, BENCH_CYCLES minor cycles of

@@ -1,7 +1,7 @@
 /*
  * The five binary inputs IP1-IP5 (header H7, pull-ups) on the DUART's input
- * port (register IP at 0xFFE40D; IP0 is the radio's carrier detect and not
- * one of them). A read is one register read: no bus, no waiting.
+ * port (register IP, the board's board_binary_in_reg; IP0 is the radio's
+ * carrier detect and not one of them). A read is one register read: no bus, no waiting.
  */
 #ifndef DRIVERS_BININ_H
 #define DRIVERS_BININ_H

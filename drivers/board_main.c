@@ -13,7 +13,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 
 #ifndef FW_IMAGE_NAME
 #define FW_IMAGE_NAME "main"

@@ -2,7 +2,7 @@
 #include "console_in.h"
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/drv_err.h"
 #include "drivers/line_edit.h"
 

@@ -1,6 +1,6 @@
 /*
  * Interrupt-driven console input, on any board: the board's receiver
- * (board_console_rx_start in drivers/board.h: the RoboCube's DUART channel B,
+ * (board_console_rx_start in boards/include/board.h: the RoboCube's DUART channel B,
  * the STM32F405's USART1) hands each received byte to this module in its
  * interrupt; output is the kernel's console (k_console_write).
  *

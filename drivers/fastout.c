@@ -5,10 +5,11 @@
  */
 #include "drivers/fastout.h"
 
+#include "boards/include/board_io.h"
 #include "drivers/drv_err.h"
 #include "kernel.h"
 
-#define FASTOUT_REG (*(volatile uint16_t *)0xFE0000u)
+#define FASTOUT_REG board_fast_out_reg
 
 static uint16_t fastout_shadow;
 

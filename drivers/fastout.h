@@ -1,6 +1,6 @@
 /*
- * The 16 fast binary outputs: a write-only 16-bit register at 0xFE0000
- * (74ABT16823 on the v2 board). The driver keeps a shadow, so single bits can
+ * The 16 fast binary outputs: a write-only 16-bit register, the board's
+ * board_fast_out_reg (0xFE0000, a 74ABT16823, on the v2 board). The driver keeps a shadow, so single bits can
  * be changed and the state read back.
  */
 #ifndef DRIVERS_FASTOUT_H

@@ -11,10 +11,8 @@
 #include "drivers/i2c.h"
 
 #include "drivers/i2c_fsm.h"
+#include "boards/include/board_io.h"
 #include "kernel.h"
-
-#define I2C_A_BASE 0xFFE200u
-#define I2C_B_BASE 0xFFE000u
 
 /* Deadline of one transaction: 4 ms plus 200 us per byte (twice the 100 us a
  * byte takes at 90 kHz). A bus that stays busy or a byte that never ends is
@@ -40,8 +38,8 @@ struct i2c_bus {
 };
 
 static struct i2c_bus i2c_buses[I2C_BUS_COUNT] = {
-    { .fsm = { .base = (volatile uint8_t *)I2C_A_BASE }, .own_addr = 0x55u, .vector = 27u },
-    { .fsm = { .base = (volatile uint8_t *)I2C_B_BASE }, .own_addr = 0x56u, .vector = 25u },
+    { .fsm = { .base = board_i2c_a_regs }, .own_addr = 0x55u, .vector = 27u },
+    { .fsm = { .base = board_i2c_b_regs }, .own_addr = 0x56u, .vector = 25u },
 };
 
 static struct k_thread i2c_service_thread;

@@ -19,7 +19,7 @@
 #include <sys/types.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/console_in.h"
 #include "drivers/drv_err.h"
 

@@ -25,7 +25,7 @@
 
 #include "kernel.h"
 #include "drivers/drv_err.h"
-#include "boards/robocube/duart.h"
+#include "boards/include/board_io.h"
 #include "drivers/motor.h"
 #include "drivers/motor_pi.h"
 #include "drivers/tpu.h"
@@ -102,11 +102,11 @@ static int motor_apply(unsigned m, int32_t permille)
     int r;
 
     if (dir != st->direction) {
-        duart_op_negate((uint8_t)(motor_fwd_bit(m) | motor_rev_bit(m)));
+        board_outputs_negate((uint8_t)(motor_fwd_bit(m) | motor_rev_bit(m)));
         if (dir > 0)
-            duart_op_assert(motor_fwd_bit(m));
+            board_outputs_assert(motor_fwd_bit(m));
         else if (dir < 0)
-            duart_op_assert(motor_rev_bit(m));
+            board_outputs_assert(motor_rev_bit(m));
         st->direction = dir;
     }
     r = tpu_pwm(motor_wiring[m].pwm, MOTOR_PWM_HZ, (int)(permille < 0 ? -permille : permille));

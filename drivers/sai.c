@@ -6,7 +6,7 @@
 #include "drivers/bio.h"
 #include "drivers/drv_err.h"
 #include "drivers/fastout.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 
@@ -19,7 +19,7 @@ static int take(int rc, int32_t *value)
     return DRV_OK;
 }
 
-/* ---- each kind's read and write (the last columns of sai_ports.h) ---- */
+/* ---- each kind's read and write ---- */
 static int sai_port_analog_read(unsigned i, int32_t *v) { return take(analog_read(i), v); }
 static int sai_port_analog_write(unsigned i, int32_t v) { return analog_write(i, (int)v); }
 static int sai_port_bio_read(unsigned i, int32_t *v) { return take(bio_read(i), v); }
@@ -72,16 +72,23 @@ static int sai_port_led_write(unsigned i, int32_t v)
     return DRV_OK;
 }
 
-#define SAI_KIND_ROW(kind, name, short_name, first, last, rd, wr, min, max, unit, read, write) \
-    [kind] = {name, short_name, first, last, rd, wr, min, max, unit, read, write},
-static const struct sai_kind_info kinds[SAI_KIND_COUNT] = {
-    SAI_PORT_TABLE(SAI_KIND_ROW)
+#define SAI_KIND(kind, read, write) [kind] = {&board_ports[kind], read, write}
+static const struct sai_kind_info kinds[BOARD_PORT_KINDS] = {
+    SAI_KIND(BOARD_PORT_ANALOG_IN, sai_port_analog_read, NULL),
+    SAI_KIND(BOARD_PORT_ANALOG_OUT, NULL, sai_port_analog_write),
+    SAI_KIND(BOARD_PORT_BINARY_IO, sai_port_bio_read, sai_port_bio_write),
+    SAI_KIND(BOARD_PORT_BINARY_IN, sai_port_binin_read, NULL),
+    SAI_KIND(BOARD_PORT_FAST_OUT, sai_port_fastout_read, sai_port_fastout_write),
+    SAI_KIND(BOARD_PORT_PWM, sai_port_pwm_read, sai_port_pwm_write),
+    SAI_KIND(BOARD_PORT_MOTOR, sai_port_motor_read, sai_port_motor_write),
+    SAI_KIND(BOARD_PORT_ENCODER, sai_port_encoder_read, NULL),
+    SAI_KIND(BOARD_PORT_LED, sai_port_led_read, sai_port_led_write),
 };
-#undef SAI_KIND_ROW
+#undef SAI_KIND
 
 const struct sai_kind_info *sai_kind_info(unsigned kind)
 {
-    return kind < SAI_KIND_COUNT ? &kinds[kind] : NULL;
+    return kind < BOARD_PORT_KINDS ? &kinds[kind] : NULL;
 }
 
 static int is_blank(char c)
@@ -127,8 +134,8 @@ static int match_kind(const char *text, const char **after)
     int best = -1;
     size_t best_len = 0;
     unsigned k;
-    for (k = 0; k < SAI_KIND_COUNT; k++) {
-        const char *names[2] = {kinds[k].name, kinds[k].short_name};
+    for (k = 0; k < BOARD_PORT_KINDS; k++) {
+        const char *names[2] = {kinds[k].port->name, kinds[k].port->short_name};
         unsigned n;
         for (n = 0; n < 2u; n++) {
             const char *end = match_name(text, names[n]);
@@ -172,12 +179,12 @@ int sai_parse_prefix(const char *text, struct sai_channel *ch, const char **rest
     p = skip_blanks(p);
     if (parse_number(p, &index, &after_number)) {
         p = after_number;
-    } else if (kinds[kind].first == kinds[kind].last && !(*p >= '0' && *p <= '9')) {
-        index = kinds[kind].first; /* a kind with one channel: the number is optional */
+    } else if (kinds[kind].port->first == kinds[kind].port->last && !(*p >= '0' && *p <= '9')) {
+        index = kinds[kind].port->first; /* a kind with one channel: the number is optional */
     } else {
         return DRV_ERR_CHANNEL;
     }
-    if (index < kinds[kind].first || index > kinds[kind].last)
+    if (index < kinds[kind].port->first || index > kinds[kind].port->last)
         return DRV_ERR_CHANNEL;
     ch->kind = (uint8_t)kind;
     ch->index = (uint8_t)index;
@@ -203,8 +210,8 @@ int sai_parse(const char *text, struct sai_channel *ch)
 
 int sai_check(struct sai_channel ch)
 {
-    if (ch.kind >= SAI_KIND_COUNT || ch.index < kinds[ch.kind].first ||
-        ch.index > kinds[ch.kind].last)
+    if (ch.kind >= BOARD_PORT_KINDS || ch.index < kinds[ch.kind].port->first ||
+        ch.index > kinds[ch.kind].port->last)
         return DRV_ERR_CHANNEL;
     return DRV_OK;
 }
@@ -213,9 +220,9 @@ int sai_check_value(struct sai_channel ch, int32_t value)
 {
     if (sai_check(ch) != DRV_OK)
         return DRV_ERR_CHANNEL;
-    if (!kinds[ch.kind].writable)
+    if (!kinds[ch.kind].port->writable)
         return DRV_ERR_PARAM;
-    if (value < kinds[ch.kind].min || value > kinds[ch.kind].max)
+    if (value < kinds[ch.kind].port->min || value > kinds[ch.kind].port->max)
         return DRV_ERR_RANGE;
     return DRV_OK;
 }
@@ -235,7 +242,7 @@ int sai_name(struct sai_channel ch, char *buf, size_t size)
         digits[n++] = (char)('0' + v % 10u);
         v /= 10u;
     } while (v != 0u);
-    for (name = kinds[ch.kind].name; *name != '\0'; name++, len++)
+    for (name = kinds[ch.kind].port->name; *name != '\0'; name++, len++)
         if (len + 1u < size)
             buf[len] = *name;
     if (len + 1u < size)
@@ -254,7 +261,7 @@ int sai_read(struct sai_channel ch, int32_t *value)
         return DRV_ERR_PARAM;
     if (sai_check(ch) != DRV_OK)
         return DRV_ERR_CHANNEL;
-    if (!kinds[ch.kind].readable || kinds[ch.kind].read == NULL)
+    if (!kinds[ch.kind].port->readable || kinds[ch.kind].read == NULL)
         return DRV_ERR_PARAM;
     return kinds[ch.kind].read(ch.index, value);
 }

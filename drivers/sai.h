@@ -1,8 +1,9 @@
 /*
  * The uniform access layer (in the spirit of CubeOS' SAI, facts 3.5): every
- * port of the RoboCube is a channel, named by its kind and a number, and
- * sai_read / sai_write work on any channel by dispatching to its driver
- * through the port table (sai_ports.h, which PDL uses too):
+ * port of the board is a channel, named by its kind and a number, and
+ * sai_read / sai_write work on any channel by dispatching to its driver.
+ * The names, numbers and ranges are the board's port table
+ * (boards/include/board_ports.h, which PDL uses too); on the RoboCube:
  *
  *   kind         short   numbers  read                      write
  *   analog in    ad      0..23    0..255 (PCF8591 input)    -
@@ -34,27 +35,23 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "drivers/sai_ports.h"   /* enum sai_kind and the table */
+#include "boards/include/board_ports.h"   /* the kinds and the board's table */
 
 struct sai_channel {
-    uint8_t kind;   /* enum sai_kind */
+    uint8_t kind;   /* enum board_port_kind */
     uint8_t index;  /* the port's number within its kind */
 };
 
-/* What a kind is: names, numbers and value ranges (for help texts and checks). */
+/* What a kind is: the board's row for it (names, numbers and value ranges,
+ * for help texts and checks) and the driver calls that serve it. */
 struct sai_kind_info {
-    const char *name;       /* "analog in" */
-    const char *short_name; /* "ad" */
-    uint8_t first, last;    /* channel numbers */
-    uint8_t readable, writable;
-    int32_t min, max;       /* write range (read range for read-only kinds) */
-    const char *unit;       /* "", "per-mille", "counts" */
+    const struct board_port_range *port;
     /* The driver calls (NULL where the kind has no such direction): DRV_OK
      * or the driver's error; index and value already checked. */
     int (*read)(unsigned index, int32_t *value);
     int (*write)(unsigned index, int32_t value);
 };
-/* NULL for a kind >= SAI_KIND_COUNT. */
+/* NULL for a kind >= BOARD_PORT_KINDS. */
 const struct sai_kind_info *sai_kind_info(unsigned kind);
 
 /* Parses a whole channel name ("analog in 5"): DRV_OK or DRV_ERR_CHANNEL

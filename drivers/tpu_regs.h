@@ -1,5 +1,6 @@
 /*
- * MC68332 TPU registers (base 0xFFFE00) and parameter RAM (0xFFFF00), as the
+ * MC68332 TPU registers and parameter RAM (where the board puts them:
+ * board_tpu_regs and board_tpu_param, boards/include/board_io.h), as the
  * chip packs them (emu/IO.md section 1.1, facts section 3.3): CFSR 4 bits per
  * channel with channel 0 in the low nibble of CFSR3; HSQR, HSRR, CPR 2 bits
  * per channel with channels 0-7 in the second register.
@@ -9,9 +10,10 @@
 
 #include <stdint.h>
 
-#define TPU_BASE        0xFFFE00u
-#define TPU_PRAM_BASE   0xFFFF00u
-#define TPU_REG16(off)  (*(volatile uint16_t *)(uintptr_t)(TPU_BASE + (off)))
+#include "boards/include/board_io.h"
+
+/* The register at byte offset off (even) from TPUMCR. */
+#define TPU_REG16(off)  (board_tpu_regs[(off) / 2u])
 
 #define TPU_MCR         TPU_REG16(0x00)
 #define TPU_TICR        TPU_REG16(0x08)
@@ -27,7 +29,7 @@
 #define TPU_FIELD2_SHIFT(ch) (2u * ((ch) % 8u))
 
 /* Channel ch, parameter word k. */
-#define TPU_PARAM(ch, k) (*(volatile uint16_t *)(uintptr_t)(TPU_PRAM_BASE + 16u * (ch) + 2u * (k)))
+#define TPU_PARAM(ch, k) (board_tpu_param[8u * (ch) + (k)])
 /* Byte address of parameter word k of channel ch, as QDEC's pointers hold it. */
 #define TPU_PARAM_ADDR(ch, k) ((uint16_t)(16u * (ch) + 2u * (k)))
 

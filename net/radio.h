@@ -1,15 +1,15 @@
 /*
- * The BiM-433 radio on DUART channel A (facts 4.2): interrupt-driven, no
- * polling and no busy transmit. OP0 = RX select, OP1 = TX select (through
- * boards/robocube/duart.h, which owns OPR), IP0 = carrier detect (low = carrier).
+ * The radio driver on the board's radio channel (boards/include/board_radio.h;
+ * on the RoboCube the BiM-433 on DUART channel A): interrupt-driven, no
+ * polling and no busy transmit.
  *
- * Receive: the RxRDYA interrupt feeds every character to the frame state
- * machine (frame.h); good frames go into a ring of RADIO_RX_FRAMES and the
- * owner's event bit is set. Transmit: radio_transmit keys the module (RX
- * select off, TX select on) and the TxRDYA interrupt feeds the encoded
- * frame; a pad character follows the closing flag, and the TxRDY after the
- * pad (the pad entered the shift register, so the flag has left) keys the
- * module back to receive and sets the owner's done bit.
+ * Receive: the channel's receive interrupt feeds every character to the
+ * frame state machine (frame.h); good frames go into a ring of
+ * RADIO_RX_FRAMES and the owner's event bit is set. Transmit: radio_transmit
+ * keys the module to transmit and the channel's transmit interrupt takes the
+ * encoded frame; a pad character follows the closing flag, and the request
+ * after the pad (the pad entered the shift register, so the flag has left)
+ * sets the owner's done bit while the board keys the module back to receive.
  */
 #ifndef NET_RADIO_H
 #define NET_RADIO_H
@@ -26,15 +26,16 @@
 #define RADIO_TX_MAX    (RADIO_ENCODED_MAX + 1u)   /* + the pad */
 
 struct radio_stats {
-    uint32_t rx_overruns;      /* characters lost in the DUART (FIFO overrun) */
+    uint32_t rx_overruns;      /* characters lost in the board's receiver (FIFO overrun) */
     uint32_t rx_ring_full;     /* good frames dropped: the ring was full */
     uint32_t collisions;       /* carrier from another station during our transmission */
     struct fec_stats fec;      /* with FEC: decoding */
     uint32_t fec_bad_count;    /* with FEC: no agreed codeword count */
 };
 
-/* Sets up channel A at 19200 baud (baud-rate set 2 if the console chose it,
- * else the counter/timer; 9600 only if that is taken too), RX select on; good frames set rx_bit in ev, finished
+/* Sets up the board's radio channel (on the RoboCube: 19200 baud from
+ * baud-rate set 2 if the console chose it, else the counter/timer; 9600 only
+ * if that is taken too), keyed to receive; good frames set rx_bit in ev, finished
  * transmissions set tx_bit; fec: frames are fec.h's (the interrupt collects
  * codewords, radio_receive corrects them). 0, or a negative K_E* code. */
 int radio_init(struct k_event *ev, uint32_t rx_bit, uint32_t tx_bit, int fec);

@@ -368,8 +368,10 @@ void pdl_get_stats(struct pdl_stats *out);
 const char *pdl_strerror(int code);
 
 /* ---- binding quantities to the board's ports (pdl_bind.c) ----
+ * The numbers and ranges are the board's port table (boards/NAME/ports.c);
+ * on the RoboCube, and on the host (the arena's RoboCube), they are:
  * Sensor ports (read at the start of each cycle, from the drivers' sampler
- * snapshot on the board):
+ * snapshot on the RoboCube):
  *   PDL_ANALOG_IN  0..23  8-bit analog inputs AIN0-23 (0..255)
  *   PDL_BINARY_IN  1..5   DUART inputs IP1-IP5 (0/1)
  *   PDL_BIO_IN     0..15  binary I/O lines BIO0-15 read as inputs (0/1)

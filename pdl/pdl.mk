@@ -9,13 +9,13 @@
 # declared beside its images, in apps/pdl_demo/app.mk.
 
 PDL_BUILD      := $(BUILD)/pdl
-# The runtime: target sources directly in pdl/ (the board platform is pdl_board.c),
-# the host platform in pdl/host/.
+# The runtime: target sources directly in pdl/ (the board platform is pdl_board.c;
+# how it reaches the board's ports, pdl/ports/, is each board's choice: its
+# board.mk), the host platform in pdl/host/. On the host the ports are the
+# RoboCube's (the arena's robot): its port table gives pdl_bind.c the ranges.
 PDL_CORE_SRCS  := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c
-PDL_HOST_SRCS  := $(PDL_CORE_SRCS) pdl/host/pdl_host.c bsched/bsched.c
-# The port table (pdl_bind.c's port ranges) and the driver headers it reads.
-PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h drivers/sai_ports.h \
-                  drivers/analog.h drivers/binin.h drivers/bio.h drivers/fastout.h drivers/motor.h drivers/tpu.h
+PDL_HOST_SRCS  := $(PDL_CORE_SRCS) pdl/host/pdl_host.c bsched/bsched.c boards/robocube/ports.c
+PDL_HEADERS    := $(wildcard pdl/*.h pdl/host/*.h pdl/examples/*.h) bsched/bsched.h boards/include/board_ports.h
 PDL_HOST_CFLAGS := $(HOST_CFLAGS) -I$(ROOT) -I$(ROOT)/bsched
 # The example behaviours (compiled for the host here and into apps/pdl_demo for the board).
 PDL_EXAMPLE_SRCS := $(wildcard pdl/examples/*.c)

@@ -8,34 +8,32 @@
  * unchanged values are not rewritten). An input the drivers failed to read
  * (the snapshot's valid bits) leaves its sensor quantities unchanged.
  *
- * The ports themselves are the platform's (pdl_board.c: the drivers;
- * host/pdl_host.c: arrays a test or a simulator fills and reads).
+ * The ports themselves are the platform's (pdl_board.c with pdl/ports/: the
+ * board's drivers or its own port access; host/pdl_host.c: arrays a test or
+ * a simulator fills and reads).
  */
 #include "pdl/pdl_internal.h"
-#include "drivers/sai_ports.h"
+#include "boards/include/board_ports.h"
 
-/* Every PDL port is a kind of the board's port table (drivers/sai_ports.h)
- * in one direction: its numbers and value range are that kind's. */
+/* Every PDL port is a kind of the board's port table
+ * (boards/include/board_ports.h) in one direction: its numbers and value
+ * range are that kind's on the board the runtime is built for. */
 struct pdl_port_info {
-    uint8_t first, last;
+    uint8_t kind;       /* enum board_port_kind */
     uint8_t output;
-    uint8_t kind;       /* enum sai_kind */
-    int32_t lo, hi;
 };
 
-#define PDL_PORT_OF(kind, output) {kind##_FIRST, kind##_LAST, output, kind, kind##_MIN, kind##_MAX}
 static const struct pdl_port_info pdl_port_table[PDL_PORT_END] = {
-    [PDL_ANALOG_IN]  = PDL_PORT_OF(SAI_ANALOG_IN, 0),
-    [PDL_BINARY_IN]  = PDL_PORT_OF(SAI_BINARY_IN, 0),
-    [PDL_BIO_IN]     = PDL_PORT_OF(SAI_BINARY_IO, 0),
-    [PDL_MOTOR]      = PDL_PORT_OF(SAI_MOTOR, 1),
-    [PDL_ANALOG_OUT] = PDL_PORT_OF(SAI_ANALOG_OUT, 1),
-    [PDL_BIO_OUT]    = PDL_PORT_OF(SAI_BINARY_IO, 1),
-    [PDL_FAST_OUT]   = PDL_PORT_OF(SAI_FAST_OUT, 1),
-    [PDL_PWM]        = PDL_PORT_OF(SAI_PWM, 1),
-    [PDL_LED]        = PDL_PORT_OF(SAI_LED, 1),
+    [PDL_ANALOG_IN]  = {BOARD_PORT_ANALOG_IN, 0},
+    [PDL_BINARY_IN]  = {BOARD_PORT_BINARY_IN, 0},
+    [PDL_BIO_IN]     = {BOARD_PORT_BINARY_IO, 0},
+    [PDL_MOTOR]      = {BOARD_PORT_MOTOR, 1},
+    [PDL_ANALOG_OUT] = {BOARD_PORT_ANALOG_OUT, 1},
+    [PDL_BIO_OUT]    = {BOARD_PORT_BINARY_IO, 1},
+    [PDL_FAST_OUT]   = {BOARD_PORT_FAST_OUT, 1},
+    [PDL_PWM]        = {BOARD_PORT_PWM, 1},
+    [PDL_LED]        = {BOARD_PORT_LED, 1},
 };
-#undef PDL_PORT_OF
 
 int pdl_port_kind(enum pdl_port port)
 {
@@ -57,11 +55,11 @@ static unsigned pdl_nsensor_bindings;
 
 int pdl_port_check(enum pdl_port port, unsigned index, int output)
 {
-    const struct pdl_port_info *p;
+    const struct board_port_range *range;
     if ((int)port <= 0 || port >= PDL_PORT_END)
         return PDL_ERR_PORT;
-    p = &pdl_port_table[port];
-    if (index < p->first || index > p->last || (int)p->output != (output != 0))
+    range = &board_ports[pdl_port_table[port].kind];
+    if (index < range->first || index > range->last || (int)pdl_port_table[port].output != (output != 0))
         return PDL_ERR_PORT;
     return PDL_OK;
 }
@@ -249,8 +247,8 @@ void pdl_bind_write_actuators(int force)
     unsigned i;
     for (i = pdl_nsensor_bindings; i < pdl_nbindings; i++) {
         struct pdl_bound *b = &pdl_bindings[i];
-        const struct pdl_port_info *p = &pdl_port_table[b->port];
-        int32_t v = pdl_clip(((const struct pdl_quantity *)(void *)b->q)->cur, p->lo, p->hi);
+        const struct board_port_range *range = &board_ports[pdl_port_table[b->port].kind];
+        int32_t v = pdl_clip(((const struct pdl_quantity *)(void *)b->q)->cur, range->min, range->max);
         int r;
         if (!force && b->written_valid && v == b->written)
             continue;

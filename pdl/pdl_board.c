@@ -1,49 +1,33 @@
 /*
  * Board platform of the PDL runtime: run_pdl() starts the cycle thread on
  * the nanokernel (the kernel's B-scheduler thread, kernel/k_bsched.c, with
- * PDL's work before and after each minor cycle), the ports are the drivers.
+ * PDL's work before and after each minor cycle). The ports are the board's,
+ * reached as the board's make file says: through the drivers
+ * (pdl/ports/drivers.c) or through the board's own port access
+ * (pdl/ports/board.c).
  *
  * The kernel thread runs a one-process B-schedule (pv 0: every minor cycle)
  * whose process is the whole PDL cycle; the PDL processes' own schedule is
  * pdl_core's (bsched.c's plan of the PDL set).
  *
- * A cycle: read the sensors from the sampler's latest snapshot (no bus
- * access in the cycle), run the due processes, commit, write the changed
- * actuators. The cycle period is a whole number of kernel ticks (f0 =
- * K_TICK_HZ / period; 1 tick = 1024 Hz at the default tick). Overruns are
+ * A cycle: read the sensors (pdl_platform_read_inputs), run the due
+ * processes, commit, write the changed actuators. The cycle period is a
+ * whole number of kernel ticks (f0 = K_TICK_HZ / period; 1 tick = 1024 Hz at
+ * the default tick). Overruns are
  * counted by the kernel thread and reported on the console by its reporter
  * thread; pdl_get_stats() returns them.
  *
- * Actuators are written through the board's port table (drivers/sai_ports.h),
- * the same as the uniform access layer's (drivers/sai.c); run_pdl() brings up
- * the drivers the bindings use.
+ * run_pdl() brings up the ports the bindings use (pdl_platform_start_ports).
  */
 #include "pdl/pdl_internal.h"
 
 #include "bsched.h"
 #include "kernel.h"
 #include "k_bsched.h"
-#include "drivers/led.h"
 #include "pdl/pdl_board.h"
-
-/* PDL_PORTS_EXTERNAL: another board's ports (boards/NAME/ defines
- * pdl_platform_read_inputs, _write and _start_ports); the RoboCube's drivers
- * below are then left out. */
-#ifndef PDL_PORTS_EXTERNAL
-#include "drivers/sai.h"
-#include "drivers/sampler.h"
-#include "drivers/board_io.h"
-#include "drivers/motor.h"
-#include "drivers/tpu.h"
-#endif
 
 #ifndef PDL_STACK_BYTES
 #define PDL_STACK_BYTES 2048u
-#endif
-/* Sampler period when run_pdl starts it (ms): a full sweep of the I/O board
- * takes 6 ms (drivers/README.md), so sensors are at most ~16 ms old. */
-#ifndef PDL_SAMPLER_MS
-#define PDL_SAMPLER_MS 10u
 #endif
 
 static struct k_bsched pdl_thread;
@@ -66,74 +50,6 @@ static uint32_t pdl_ticks_to_us(k_ticks_t t)
 {
     return (t / K_TICK_HZ) * 1000000u + (t % K_TICK_HZ) * 1000000u / K_TICK_HZ;
 }
-
-/* ---- ports ---- */
-#ifndef PDL_PORTS_EXTERNAL
-void pdl_platform_read_inputs(struct pdl_inputs *in)
-{
-    struct sensor_snapshot snap;
-    unsigned i;
-    sampler_read(&snap);
-    for (i = 0; i < 24u; i++)
-        in->analog[i] = snap.analog[i];
-    in->bio = snap.bio;
-    in->binin = (uint8_t)(snap.binin << 1);     /* the sampler has IP1 in bit 0 */
-    in->valid = snap.seq == 0u ? 0u : snap.valid;
-}
-
-/* Through the board's port table (drivers/sai_ports.h): the driver's result.
- * Index and value are in the port's range (pdl_bind.c checked and clipped). */
-int pdl_platform_write(enum pdl_port port, unsigned index, int32_t v)
-{
-    const struct sai_kind_info *k = sai_kind_info((unsigned)pdl_port_kind(port));
-    if (k == NULL || k->write == NULL)
-        return PDL_ERR_DRIVER;
-    return k->write(index, v);
-}
-
-static int pdl_driver_failed(int code, const char *what)
-{
-    pdl_stats.last_driver_code = code;
-    return pdl_refuse(PDL_ERR_DRIVER, what);
-}
-
-/* Brings up the drivers the bindings use, each once per boot: the I/O board
- * (board_io_init) for analog/binary ports, the sampler for inputs, the
- * motors, the TPU for PWM. */
-int pdl_platform_start_ports(void)
-{
-    static int io_up, sampler_up, motors_up, tpu_up;
-    int r;
-    if (!io_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
-                   pdl_bind_uses(PDL_BIO_IN) || pdl_bind_uses(PDL_ANALOG_OUT) ||
-                   pdl_bind_uses(PDL_BIO_OUT) || pdl_bind_uses(PDL_FAST_OUT))) {
-        r = board_io_init();
-        if (r < 0)
-            return pdl_driver_failed(r, "run_pdl: board_io_init");
-        io_up = 1;
-    }
-    if (!sampler_up && (pdl_bind_uses(PDL_ANALOG_IN) || pdl_bind_uses(PDL_BINARY_IN) ||
-                        pdl_bind_uses(PDL_BIO_IN))) {
-        r = sampler_start(PDL_SAMPLER_MS);
-        if (r < 0)
-            return pdl_driver_failed(r, "run_pdl: sampler_start");
-        sampler_up = 1;
-    }
-    if (!motors_up && pdl_bind_uses(PDL_MOTOR)) {
-        r = motor_init();
-        if (r < 0)
-            return pdl_driver_failed(r, "run_pdl: motor_init");
-        motors_up = 1;
-    }
-    if (!tpu_up && pdl_bind_uses(PDL_PWM)) {
-        r = tpu_init();
-        if (r < 0)
-            return pdl_driver_failed(r, "run_pdl: tpu_init");
-        tpu_up = 1;
-    }
-    return PDL_OK;
-}
-#endif /* PDL_PORTS_EXTERNAL */
 
 /* ---- the cycle thread ---- */
 static struct bsched pdl_outer;

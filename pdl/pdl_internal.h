@@ -1,7 +1,8 @@
 /*
  * Inside the PDL runtime: what the core (pdl_core.c), the binding table
- * (pdl_bind.c) and the two platforms (pdl_board.c on the nanokernel,
- * host/pdl_host.c on the host) say to each other.
+ * (pdl_bind.c) and the two platforms (pdl_board.c on the nanokernel, with
+ * the board's ports through pdl/ports/; host/pdl_host.c on the host) say to
+ * each other.
  */
 #ifndef PDL_INTERNAL_H
 #define PDL_INTERNAL_H
@@ -70,7 +71,7 @@ void pdl_bind_refresh_sensors(void);
 void pdl_bind_write_actuators(int force);
 /* Valid port/index for a direction: PDL_OK or PDL_ERR_PORT. */
 int pdl_port_check(enum pdl_port port, unsigned index, int output);
-/* The port's kind in the board's port table (drivers/sai_ports.h), or -1. */
+/* The port's kind in the board's port table (boards/include/board_ports.h), or -1. */
 int pdl_port_kind(enum pdl_port port);
 void pdl_bind_reset(void);
 

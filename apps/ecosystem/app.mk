@@ -58,7 +58,8 @@ eco-survival:
 # a variable read before it is set (a make file included too early) shows.
 ECO_HOST_DEP_SRCS := apps/ecosystem/host/eco_host.c apps/ecosystem/eco_program.c apps/ecosystem/eco_program.h \
                      pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c pdl/host/pdl_host.c bsched/bsched.c \
-                     pdl/pdl.h pdl/host/pdl_host.h bsched/bsched.h drivers/sai_ports.h
+                     pdl/pdl.h pdl/host/pdl_host.h bsched/bsched.h boards/include/board_ports.h \
+                     boards/robocube/ports.c
 CHECKS += eco-host-deps
 .PHONY: check-eco-host-deps
 check-eco-host-deps: $(ECO_HOST_LIB)

@@ -14,7 +14,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "eco_program.h"
 #include "pdl/pdl.h"
 

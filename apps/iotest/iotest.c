@@ -41,7 +41,7 @@
 #include "drivers/i2c.h"
 #include "drivers/sampler.h"
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 
 #define IOTEST_LINE 80u
 #define IOTEST_SAMPLER_MS 10u

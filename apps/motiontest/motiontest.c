@@ -27,7 +27,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/cmd.h"
 #include "drivers/drv_err.h"
 #include "boards/robocube/mc68681.h"

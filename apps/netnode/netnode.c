@@ -16,7 +16,7 @@
  * Every mode runs the echo service and prints the statistics at the end.
  */
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "net/net.h"
 #include "net/xdr.h"
 

@@ -17,7 +17,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "pdl/pdl.h"
 #include "pdl/pdl_board.h"
 

@@ -10,10 +10,10 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/cmd.h"
 #include "drivers/console_in.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 
 void shell_reply_error(const char *fmt, ...)
 {

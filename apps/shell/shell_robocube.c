@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "drivers/board_io.h"
 #include "drivers/cmd.h"
 #include "drivers/drv_err.h"
@@ -33,11 +33,11 @@ static int channel_of(const char *line, char **argv, struct sai_channel *ch)
     int rc = sai_parse_prefix(line, ch, &rest);
     if (rc >= 0)
         return rc;
-    for (k = 0; k < SAI_KIND_COUNT; k++) { /* name the numbers the kind has */
+    for (k = 0; k < BOARD_PORT_KINDS; k++) { /* name the numbers the kind has */
         const struct sai_kind_info *info = sai_kind_info(k);
-        if (cmd_same(argv[0], info->short_name)) {
+        if (cmd_same(argv[0], info->port->short_name)) {
             reply_error("%s %s: no such channel (%s %u..%u)", argv[0], argv[1],
-                        info->short_name, info->first, info->last);
+                        info->port->short_name, info->port->first, info->port->last);
             return rc;
         }
     }
@@ -48,7 +48,7 @@ static int channel_of(const char *line, char **argv, struct sai_channel *ch)
 /* Prints "SHORT N = V": the answer of every port command. */
 static void print_channel(struct sai_channel ch, int32_t value)
 {
-    k_printf("%s %u = %ld\n", sai_kind_info(ch.kind)->short_name, ch.index, (long)value);
+    k_printf("%s %u = %ld\n", sai_kind_info(ch.kind)->port->short_name, ch.index, (long)value);
 }
 
 static void report_driver_error(const char *what, int rc)
@@ -83,7 +83,7 @@ static void cmd_port(int argc, char **argv, const char *line)
     if (rc == DRV_ERR_RANGE) {
         const struct sai_kind_info *info = sai_kind_info(ch.kind);
         reply_error("%s %s: value %ld out of range %ld..%ld", argv[0], argv[1], (long)value,
-                    (long)info->min, (long)info->max);
+                    (long)info->port->min, (long)info->port->max);
         return;
     }
     if (rc < 0) {

@@ -27,10 +27,10 @@
 
 #include "bsched.h"
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "k_board.h"
 #include "k_bsched.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 
 #ifndef TABLE1_MAJOR_CYCLES
 #define TABLE1_MAJOR_CYCLES 4u

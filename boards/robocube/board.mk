@@ -46,6 +46,14 @@ FW_ICOUNT    := shift=8,sleep=off
 FW_BASE_SRCS := boards/robocube/start.S kernel/arch/cpu32/exceptions.c \
                 kernel/lib/kprintf.c kernel/lib/kstring.c \
                 boards/robocube/duart_console.c boards/robocube/pit.c bsched/bsched.c
+# The board interface of the images and the drivers (boards/include/:
+# board.h, board_led.h, board_ports.h, board_radio.h) on this board, linked as a
+# library of every image (apps/apps.mk).
+FW_BOARD_LIB_SRCS := boards/robocube/board.c boards/robocube/led.c boards/robocube/ports.c \
+                     boards/robocube/radio.c boards/common/board_common.c
+# PDL reaches this board's ports through its drivers (the sampler, the uniform
+# access layer): linked with the PDL runtime (apps/apps.mk).
+FW_PDL_PORTS_SRCS := pdl/ports/drivers.c
 # The kernel's board interface (kernel/include/k_board.h) on this board: PIT
 # tick, interrupt-driven console; linked with the kernel (kernel/kernel.mk).
 BOARD_KERNEL_SRCS := boards/robocube/k_board_robocube.c

@@ -1,15 +1,17 @@
 /*
  * Shared services of the MC68681 DUART. One chip serves several drivers: the
- * console (channel B, in k_board_robocube.c), the radio (channel A, net/), the
+ * console (channel B, in k_board_robocube.c), the radio (channel A, radio.c), the
  * binary inputs (IP1-IP5) and carrier detect (IP0), and the output port
  * (motor direction OP2-OP7, radio enables OP0/OP1). Its interrupt mask (IMR)
  * and the auxiliary control register (ACR) are write-only and its single
  * interrupt is shared, so those live here, once, and drivers attach to them.
  */
-#ifndef DRIVERS_DUART_H
-#define DRIVERS_DUART_H
+#ifndef ROBOCUBE_DUART_H
+#define ROBOCUBE_DUART_H
 
 #include <stdint.h>
+
+#include "boards/include/board_io.h"
 
 /* ISR / IMR bits. */
 #define DUART_INT_TXRDYA   0x01u
@@ -20,6 +22,11 @@
 #define DUART_INT_RXRDYB   0x20u
 #define DUART_INT_BREAKB   0x40u
 #define DUART_INT_IPCHANGE 0x80u
+
+/* The DUART's interrupt: the vector the chip gives (written to IVR) and the
+ * level the board wires it to. */
+#define DUART_IRQ_VECTOR 72u
+#define DUART_IRQ_LEVEL   5u
 
 /* Handlers the DUART interrupt can call, besides the console's. */
 #define DUART_MAX_HANDLERS 4u
@@ -40,10 +47,9 @@ int duart_irq_attach(uint8_t mask, duart_irq_handler fn, void *arg);
 void duart_imr_update(uint8_t set, uint8_t clear);
 uint8_t duart_imr(void);
 
-/* Output port: bit n set = OPn asserted (pin low), as OPR-set/OPR-reset do.
- * Each call is one register write, so drivers owning different bits never race. */
-void duart_op_assert(uint8_t bits);
-void duart_op_negate(uint8_t bits);
+/* Output port: bit n set = OPn asserted (pin low), as OPR-set/OPR-reset do:
+ * the board's output lines, board_outputs_assert and _negate
+ * (boards/include/board_io.h). */
 uint8_t duart_op(void);   /* the shadow of OPR (the register is write-only) */
 
 /* ACR bits 3-0 enable the input-change interrupt for IP3-IP0 (IPCR). ACR's
@@ -57,4 +63,4 @@ void duart_acr_ipchange(uint8_t ip_mask);
  * is already in use (ACR bits 6-4 not 000, e.g. the 57600 console's clock). */
 int duart_ct_baud_clock(uint16_t preload);
 
-#endif /* DRIVERS_DUART_H */
+#endif /* ROBOCUBE_DUART_H */

@@ -117,7 +117,7 @@ uint8_t duart_imr(void)
     return k_duart_imr;
 }
 
-void duart_op_assert(uint8_t bits)
+void board_outputs_assert(uint8_t bits)
 {
     uint32_t irq = k_arch_irq_save();
     k_duart_opr = (uint8_t)(k_duart_opr | bits);
@@ -125,7 +125,7 @@ void duart_op_assert(uint8_t bits)
     k_arch_irq_restore(irq);
 }
 
-void duart_op_negate(uint8_t bits)
+void board_outputs_negate(uint8_t bits)
 {
     uint32_t irq = k_arch_irq_save();
     k_duart_opr = (uint8_t)(k_duart_opr & (uint8_t)~bits);
@@ -217,8 +217,8 @@ int k_board_init(void)
         for (i = 0; i < DUART_MAX_HANDLERS; i++)
             k_duart_handlers[i].fn = NULL;
     }
-    DUART_REG(DUART_IVR) = (uint8_t)K_BOARD_DUART_VECTOR;
-    if (k_irq_register(K_BOARD_DUART_VECTOR, K_BOARD_DUART_LEVEL, k_duart_isr, NULL) != K_OK ||
+    DUART_REG(DUART_IVR) = (uint8_t)DUART_IRQ_VECTOR;
+    if (k_irq_register(DUART_IRQ_VECTOR, DUART_IRQ_LEVEL, k_duart_isr, NULL) != K_OK ||
         k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     k_console_register(k_board_console_write, k_board_console_write_sync);

@@ -1,13 +1,13 @@
 /*
- * The shared start-up of the firmware images (drivers/board.h) and the
- * status LED (drivers/led.h) on the STM32F405: the same interface the
- * RoboCube's drivers/board.c and drivers/led.c give (drivers/board_common.c
- * has what both share), so an image that uses only the kernel, the console
+ * The shared start-up of the firmware images (boards/include/board.h) and the
+ * status LED (boards/include/board_led.h) on the STM32F405: the same interface
+ * the RoboCube's boards/robocube/board.c and led.c give
+ * (boards/common/board_common.c has what both share), so an image that uses only the kernel, the console
  * (output and line input, drivers/console_in.h) and the LED builds for
  * either board.
  */
-#include "drivers/board.h"
-#include "drivers/led.h"
+#include "boards/include/board.h"
+#include "boards/include/board_led.h"
 
 #include "k_board.h"
 #include "armv7m.h"

@@ -9,8 +9,8 @@
 #   make check-stm32f405-firmware             table1 (Table 2) and the fault report
 #
 # An image builds for this board when its sources include none of the
-# RoboCube's hardware headers (the drivers besides board.h and led.h, the
-# CPU32 headers); otherwise make says which it needs and stops.
+# RoboCube's hardware headers (the drivers besides those below, the RoboCube's
+# board folder, the CPU32 headers); otherwise make says which it needs and stops.
 
 STM32_BUILD   := $(BUILD)/stm32f405
 ARM_CC        ?= arm-none-eabi-gcc
@@ -37,21 +37,21 @@ STM32_ICOUNT  := shift=3,sleep=off
 STM32_QEMU_ARGS := -M $(STM32_MACHINE) -display none -monitor none -serial stdio \
                    -semihosting-config enable=on,target=native
 
-# The drivers that need nothing of the RoboCube: the board interface's shared
-# part, console line input and the command parser (an image links only what
-# it calls: --gc-sections).
-STM32_DRIVER_SRCS := drivers/board_common.c drivers/console_in.c drivers/line_edit.c \
+# The drivers that need nothing of the RoboCube: console line input and the
+# command parser (an image links only what it calls: --gc-sections).
+STM32_DRIVER_SRCS := drivers/console_in.c drivers/line_edit.c \
                      drivers/cmd.c drivers/drv_err.c
-# The port, the board, the kernel and the libraries every image links,
+# The port, the board (with the board interface's shared part,
+# boards/common/), the kernel and the libraries every image links,
 # compiled per image at its tick rate.
 STM32_BASE_SRCS := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c \
                    kernel/arch/armv7m/k_arch_armv7m.c kernel/arch/armv7m/switch.S \
                    boards/stm32f405/vectors.c boards/stm32f405/k_board_stm32f405.c \
-                   boards/stm32f405/board.c kernel/lib/kprintf.c kernel/lib/kstring.c \
+                   boards/stm32f405/board.c boards/common/board_common.c kernel/lib/kprintf.c kernel/lib/kstring.c \
                    bsched/bsched.c $(K_CORE_SRCS) $(STM32_DRIVER_SRCS)
 
 # Headers that name RoboCube hardware: an image including one needs that board.
-STM32_ROBOCUBE_ONLY := $(filter-out drivers/board.h drivers/led.h $(STM32_DRIVER_SRCS:.c=.h),$(wildcard drivers/*.h)) \
+STM32_ROBOCUBE_ONLY := $(filter-out $(STM32_DRIVER_SRCS:.c=.h),$(wildcard drivers/*.h)) \
                        $(wildcard boards/robocube/*.h) mc68332.h cpu.h
 # An image's sources on this board: NAME_SRCS_stm32f405 where its app.mk gives
 # them (an image with a part per board), else NAME_SRCS.
@@ -62,9 +62,10 @@ stm32_includes = $(shell grep -lF '$(stm32_hash)include "$(2)' $(call stm32_srcs
 stm32_needs = $(strip $(sort $(foreach h,$(STM32_ROBOCUBE_ONLY),$(if $(call stm32_includes,$(1),$(h)"),$(h)))) \
                   $(if $(call stm32_includes,$(1),net/),net/ (the radio on the DUART)) \
                   $(if $($(1)_RUNNER),its runner (the RoboCube world co-simulation)))
-# The PDL runtime with this board's ports, for images that include pdl/.
+# The PDL runtime with this board's ports, for images that include pdl/: the
+# board's own port access (ports.c), which PDL reaches through pdl/ports/board.c.
 STM32_PDL_SRCS := pdl/pdl_core.c pdl/pdl_bind.c pdl/pdl_state.c pdl/pdl_board.c \
-                  pdl/stm32f405/pdl_ports_stm32f405.c
+                  pdl/ports/board.c boards/stm32f405/ports.c
 
 stm32_elf = $(STM32_BUILD)/$(1)/$(1).elf
 
@@ -97,7 +98,7 @@ define stm32_app_template
 $$(eval $$(call stm32_image,$$(STM32_BUILD)/$(1)/obj,$$(call stm32_elf,$(1)),$$(call stm32_srcs,$(1)) \
     $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)) \
     $$(if $$(call stm32_includes,$(1),pdl/),$$(STM32_PDL_SRCS)),\
-    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' -DPDL_PORTS_EXTERNAL $$($(1)_CFLAGS)))
+    -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$($(1)_CFLAGS)))
 endef
 $(foreach a,$(APPS),$(eval $(call stm32_app_template,$(a))))
 
@@ -175,13 +176,13 @@ check-stm32f405-firmware:
 STM32_PDL_TEST_ELF := $(STM32_BUILD)/tests/pdl-ports.elf
 $(eval $(call stm32_image,$(STM32_BUILD)/tests/obj-pdl,$(STM32_PDL_TEST_ELF),\
     boards/stm32f405/tests/pdl_ports.c $(APP_BOOT_SRC) $(STM32_PDL_SRCS),\
-    -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"' -DPDL_PORTS_EXTERNAL))
+    -DK_TICK_HZ=1024 -DFW_IMAGE_NAME='"pdl_ports"'))
 
-# The bench image (boards/stm32f405/bench_armv7m.c): bsched.c and the Fig. 7
+# The bench image (bench/bench_armv7m.c): bsched.c and the Fig. 7
 # reference at BSCHED_MAX_PROCS = $(BENCH_PROCS), as the CPU32's bench image.
 STM32_BENCH_DIR  := $(BENCH_DIR)/stm32f405
 STM32_BENCH_ELF  := $(STM32_BENCH_DIR)/bench-armv7m.elf
-STM32_BENCH_SRCS := boards/stm32f405/bench_armv7m.c bsched/proofs/ref/bsched_fig7.c
+STM32_BENCH_SRCS := bench/bench_armv7m.c bsched/proofs/ref/bsched_fig7.c
 STM32_BENCH_FLAGS = $(filter-out -DBSCHED_MAX_PROCS=%,$(STM32_CFLAGS)) -DBSCHED_MAX_PROCS=$(BENCH_PROCS) \
                     -I$(ROOT)/bsched/proofs/ref -I$(ROOT)/bench -DBENCH_CYCLES=$(BENCH_CYCLES)u
 STM32_BENCH_OBJS := $(patsubst %,$(STM32_BENCH_DIR)/%.o,$(STM32_BENCH_SRCS) $(STM32_BASE_SRCS))

@@ -4,10 +4,10 @@
 
 #include <stdint.h>
 
-#include "drivers/board.h"
+#include "boards/include/board.h"
 
 /* The console's receiver on USART1, the board's side of
- * board_console_rx_start (drivers/board.h): calls fn(byte, flags) in the
+ * board_console_rx_start (boards/include/board.h): calls fn(byte, flags) in the
  * console's interrupt for every received byte; when fn returns 0, reception
  * pauses (the next byte waits in the USART) until
  * stm32f405_console_rx_resume. NULL: reception off. Returns 0, or -1 when
@@ -15,7 +15,7 @@
 int stm32f405_console_rx_attach(board_console_rx_sink fn);
 void stm32f405_console_rx_resume(void);
 
-/* The simulated part of the PDL ports (pdl/stm32f405/pdl_ports_stm32f405.c). */
+/* The simulated part of the board's ports (ports.c). */
 struct stm32f405_sim_io {
     uint16_t bio;            /* PDL_BIO_OUT writes, PDL_BIO_IN reads */
     uint8_t binin;           /* PDL_BINARY_IN reads */

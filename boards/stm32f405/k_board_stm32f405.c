@@ -29,7 +29,7 @@
 #include "stm32f405.h"
 #include "kernel/lib/kprintf.h"
 #include "boards/stm32f405/board_stm32f405.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 
 #define CONSOLE_LEVEL 5u
 

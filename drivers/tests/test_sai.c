@@ -17,7 +17,7 @@
 #include "drivers/binin.h"
 #include "drivers/bio.h"
 #include "drivers/fastout.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "drivers/motor.h"
 #include "drivers/tpu.h"
 
@@ -96,16 +96,16 @@ static struct sai_channel chan(const char *text)
 static void test_parse_every_kind_long_and_short(void **state)
 {
     static const struct { const char *text; unsigned kind, index; } ok[] = {
-        {"analog in 5", SAI_ANALOG_IN, 5}, {"ad 23", SAI_ANALOG_IN, 23},
-        {"analog out 2", SAI_ANALOG_OUT, 2}, {"da 0", SAI_ANALOG_OUT, 0},
-        {"binary io 12", SAI_BINARY_IO, 12}, {"bio 15", SAI_BINARY_IO, 15},
-        {"binary in 3", SAI_BINARY_IN, 3}, {"bin 1", SAI_BINARY_IN, 1},
-        {"fast out 7", SAI_FAST_OUT, 7}, {"fast 0", SAI_FAST_OUT, 0},
-        {"pwm 4", SAI_PWM, 4}, {"pwm 15", SAI_PWM, 15},
-        {"motor 1", SAI_MOTOR, 1}, {"encoder 0", SAI_ENCODER, 0}, {"enc 2", SAI_ENCODER, 2},
-        {"led", SAI_LED, 0}, {"led 0", SAI_LED, 0},
-        {"  Analog   IN\t5  ", SAI_ANALOG_IN, 5}, {"MOTOR 2", SAI_MOTOR, 2},
-        {"ad 007", SAI_ANALOG_IN, 7},
+        {"analog in 5", BOARD_PORT_ANALOG_IN, 5}, {"ad 23", BOARD_PORT_ANALOG_IN, 23},
+        {"analog out 2", BOARD_PORT_ANALOG_OUT, 2}, {"da 0", BOARD_PORT_ANALOG_OUT, 0},
+        {"binary io 12", BOARD_PORT_BINARY_IO, 12}, {"bio 15", BOARD_PORT_BINARY_IO, 15},
+        {"binary in 3", BOARD_PORT_BINARY_IN, 3}, {"bin 1", BOARD_PORT_BINARY_IN, 1},
+        {"fast out 7", BOARD_PORT_FAST_OUT, 7}, {"fast 0", BOARD_PORT_FAST_OUT, 0},
+        {"pwm 4", BOARD_PORT_PWM, 4}, {"pwm 15", BOARD_PORT_PWM, 15},
+        {"motor 1", BOARD_PORT_MOTOR, 1}, {"encoder 0", BOARD_PORT_ENCODER, 0}, {"enc 2", BOARD_PORT_ENCODER, 2},
+        {"led", BOARD_PORT_LED, 0}, {"led 0", BOARD_PORT_LED, 0},
+        {"  Analog   IN\t5  ", BOARD_PORT_ANALOG_IN, 5}, {"MOTOR 2", BOARD_PORT_MOTOR, 2},
+        {"ad 007", BOARD_PORT_ANALOG_IN, 7},
     };
     size_t i;
     (void)state;
@@ -144,14 +144,14 @@ static void test_parse_prefix_leaves_the_rest(void **state)
     const char *rest = NULL;
     (void)state;
     assert_int_equal(sai_parse_prefix("da 2 100", &ch, &rest), DRV_OK);
-    assert_int_equal(ch.kind, SAI_ANALOG_OUT);
+    assert_int_equal(ch.kind, BOARD_PORT_ANALOG_OUT);
     assert_int_equal(ch.index, 2);
     assert_string_equal(rest, " 100");
     assert_int_equal(sai_parse_prefix("led on", &ch, &rest), DRV_OK);
-    assert_int_equal(ch.kind, SAI_LED);
+    assert_int_equal(ch.kind, BOARD_PORT_LED);
     assert_string_equal(rest, "on");
     assert_int_equal(sai_parse_prefix("binary io 3 -1", &ch, &rest), DRV_OK);
-    assert_int_equal(ch.kind, SAI_BINARY_IO);
+    assert_int_equal(ch.kind, BOARD_PORT_BINARY_IO);
     assert_int_equal(ch.index, 3);
     assert_string_equal(rest, " -1");
     rest = "unchanged";
@@ -163,11 +163,22 @@ static void test_names_round_trip(void **state)
 {
     unsigned k;
     (void)state;
-    for (k = 0; k < SAI_KIND_COUNT; k++) {
+    /* The RoboCube's port table (boards/robocube/ports.c) has the numbers
+     * its drivers handle. */
+    assert_int_equal(board_ports[BOARD_PORT_ANALOG_IN].last, ANALOG_INPUTS - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_ANALOG_OUT].last, ANALOG_OUTPUTS - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_BINARY_IO].last, BIO_LINES - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_BINARY_IN].first, BININ_FIRST);
+    assert_int_equal(board_ports[BOARD_PORT_BINARY_IN].last, BININ_LAST);
+    assert_int_equal(board_ports[BOARD_PORT_FAST_OUT].last, FASTOUT_BITS - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_PWM].last, TPU_CHANNELS - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_MOTOR].last, MOTOR_COUNT - 1u);
+    assert_int_equal(board_ports[BOARD_PORT_ENCODER].last, MOTOR_COUNT - 1u);
+    for (k = 0; k < BOARD_PORT_KINDS; k++) {
         const struct sai_kind_info *info = sai_kind_info(k);
         unsigned i;
         assert_non_null(info);
-        for (i = info->first; i <= info->last; i++) {
+        for (i = info->port->first; i <= info->port->last; i++) {
             struct sai_channel ch = {(uint8_t)k, (uint8_t)i}, back;
             char name[24];
             int len = sai_name(ch, name, sizeof name);
@@ -177,19 +188,19 @@ static void test_names_round_trip(void **state)
             assert_int_equal(back.index, i);
         }
     }
-    assert_null(sai_kind_info(SAI_KIND_COUNT));
+    assert_null(sai_kind_info(BOARD_PORT_KINDS));
 }
 
 static void test_name_truncates_and_rejects(void **state)
 {
     char buf[8];
-    struct sai_channel ch = {SAI_ANALOG_IN, 17};
+    struct sai_channel ch = {BOARD_PORT_ANALOG_IN, 17};
     (void)state;
     assert_int_equal(sai_name(ch, buf, sizeof buf), 12); /* "analog in 17" */
     assert_string_equal(buf, "analog ");
-    assert_int_equal(sai_name((struct sai_channel){SAI_ANALOG_IN, 24}, buf, sizeof buf),
+    assert_int_equal(sai_name((struct sai_channel){BOARD_PORT_ANALOG_IN, 24}, buf, sizeof buf),
                      DRV_ERR_CHANNEL);
-    assert_int_equal(sai_name((struct sai_channel){SAI_KIND_COUNT, 0}, buf, sizeof buf),
+    assert_int_equal(sai_name((struct sai_channel){BOARD_PORT_KINDS, 0}, buf, sizeof buf),
                      DRV_ERR_CHANNEL);
     assert_int_equal(sai_name(ch, NULL, 4), DRV_ERR_PARAM);
 }
@@ -213,7 +224,7 @@ static void test_value_ranges(void **state)
     assert_int_equal(sai_check_value(chan("ad 1"), 0), DRV_ERR_PARAM);
     assert_int_equal(sai_check_value(chan("bin 1"), 0), DRV_ERR_PARAM);
     assert_int_equal(sai_check_value(chan("enc 1"), 0), DRV_ERR_PARAM);
-    assert_int_equal(sai_check_value((struct sai_channel){SAI_MOTOR, 3}, 0), DRV_ERR_CHANNEL);
+    assert_int_equal(sai_check_value((struct sai_channel){BOARD_PORT_MOTOR, 3}, 0), DRV_ERR_CHANNEL);
 }
 
 /* ---- dispatch ---- */
@@ -290,9 +301,9 @@ static void test_refusals_reach_no_driver(void **state)
     assert_int_equal(sai_write(chan("motor 0"), 1001), DRV_ERR_RANGE);
     assert_int_equal(sai_write(chan("ad 1"), 5), DRV_ERR_PARAM);
     assert_int_equal(sai_write(chan("encoder 0"), 5), DRV_ERR_PARAM);
-    assert_int_equal(sai_write((struct sai_channel){SAI_ANALOG_OUT, 6}, 5), DRV_ERR_CHANNEL);
+    assert_int_equal(sai_write((struct sai_channel){BOARD_PORT_ANALOG_OUT, 6}, 5), DRV_ERR_CHANNEL);
     assert_int_equal(sai_read(chan("da 1"), &v), DRV_ERR_PARAM);
-    assert_int_equal(sai_read((struct sai_channel){SAI_ANALOG_IN, 24}, &v), DRV_ERR_CHANNEL);
+    assert_int_equal(sai_read((struct sai_channel){BOARD_PORT_ANALOG_IN, 24}, &v), DRV_ERR_CHANNEL);
     assert_int_equal(sai_read((struct sai_channel){200, 0}, &v), DRV_ERR_CHANNEL);
     assert_int_equal(sai_read(chan("ad 1"), NULL), DRV_ERR_PARAM);
     assert_string_equal(last_call, ""); /* no driver was called */

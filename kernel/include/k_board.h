@@ -1,9 +1,10 @@
 /*
  * What the nanokernel needs from a board (kernel/README.md, "The board
- * interface"). The RoboCube implements it in boards/robocube/k_board_robocube.c:
- * the PIT drives k_tick, and k_board_init registers the console writers
- * (k_console_register, kernel.h): polled first, then interrupt-driven on DUART
- * channel B behind a ring buffer. The image's start-up calls k_board_init;
+ * interface"). Each board implements it in its folder (the RoboCube in
+ * boards/robocube/k_board_robocube.c, the STM32F405 in
+ * boards/stm32f405/k_board_stm32f405.c): its timer drives k_tick, and
+ * k_board_init registers the console writers (k_console_register, kernel.h):
+ * polled first, then interrupt-driven behind a ring buffer. The image's start-up calls k_board_init;
  * the kernel itself calls nothing of the board.
  */
 #ifndef K_BOARD_H
@@ -11,9 +12,6 @@
 
 #include <stdint.h>
 
-/* DUART interrupt vector (written to IVR); level 5 is wired on the board. */
-#define K_BOARD_DUART_VECTOR 72u
-#define K_BOARD_DUART_LEVEL   5u
 /* Console transmit ring, bytes (power of two). */
 #define K_BOARD_CONSOLE_RING 1024u
 

@@ -10,7 +10,7 @@
 #include <stdint.h>
 
 #include "kernel.h"
-#include "drivers/board.h"
+#include "boards/include/board.h"
 #include "kernel/lib/kprintf.h"
 
 #ifndef FAULT_KIND

@@ -1,6 +1,6 @@
 /*
  * PDL target test image of the stm32f405 board (test_stm32f405.py): a PDL
- * program whose ports are the board's (pdl/stm32f405/pdl_ports_stm32f405.c). Each cycle
+ * program whose ports are the board's (boards/stm32f405/ports.c). Each cycle
  * one process copies ADC1 channel 0 to TIM3's PWM channel 0, another toggles
  * simulated BIO line 3, and a third counts the cycles in which BIO_IN 3
  * reads back what was written the cycle before. After one second main

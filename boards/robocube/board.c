@@ -1,11 +1,11 @@
-/* The RoboCube's side of the board interface (board.h): start-up, halt,
- * power-off and the console's receiver. What every board shares is in
- * board_common.c. */
-#include "drivers/board.h"
+/* The RoboCube's side of the board interface (boards/include/board.h):
+ * start-up, halt, power-off and the console's receiver. What every board
+ * shares is in boards/common/board_common.c. */
+#include "boards/include/board.h"
 
 #include "kernel/arch/cpu32/cpu.h"
 #include "k_board.h"
-#include "drivers/led.h"
+#include "boards/include/board_led.h"
 #include "boards/robocube/duart.h"
 #include "boards/robocube/duart_console.h"
 #include "boards/robocube/mc68332.h"

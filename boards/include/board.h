@@ -6,10 +6,13 @@
  *     board_spawn(&t, "name", fn, arg, stack, sizeof stack, prio);
  *     k_start();
  *
- * so the boot sequence and its failure handling live here once.
+ * so the boot sequence and its failure handling live here once. Every board
+ * implements this in its folder (boards/robocube/board.c,
+ * boards/stm32f405/board.c); boards/common/board_common.c has what is the
+ * same on every board.
  */
-#ifndef DRIVERS_BOARD_H
-#define DRIVERS_BOARD_H
+#ifndef BOARD_H
+#define BOARD_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -66,4 +69,4 @@ typedef int (*board_console_rx_sink)(uint8_t byte, unsigned flags);
 int board_console_rx_start(board_console_rx_sink sink);
 void board_console_rx_resume(void);
 
-#endif /* DRIVERS_BOARD_H */
+#endif /* BOARD_H */

@@ -1,7 +1,6 @@
-/* The part of the board interface (board.h) that is the same on every board:
- * each board's own file (drivers/board.c for the RoboCube, boards/NAME/board.c
- * for another) gives the rest. */
-#include "drivers/board.h"
+/* The part of the board interface (boards/include/board.h) that is the same
+ * on every board: each board's own boards/NAME/board.c gives the rest. */
+#include "boards/include/board.h"
 
 #include "kernel/lib/kstring.h"
 

@@ -1,5 +1,7 @@
-/* Status LED on port E bit 3; see led.h. */
-#include "led.h"
+/* The status LED (boards/include/board_led.h) on the RoboCube: the green LED
+ * on SIM port E bit 3 (PE3, the /RMC pin), output 1 = LED on. Making PE3 a
+ * general-purpose output leaves the other port E pins their bus functions. */
+#include "boards/include/board_led.h"
 
 #include "boards/robocube/mc68332.h"
 
