@@ -36,7 +36,7 @@
       sai_port_binin_read, NULL) \
     X(SAI_FAST_OUT,   "fast out",   "fast",  0, FASTOUT_BITS - 1u,   1, 1, 0, 1, "", \
       sai_port_fastout_read, sai_port_fastout_write) \
-    X(SAI_PWM,        "pwm",        "pwm",   0, TPU_CHANNELS - 1u,   1, 1, 0, 1000, "per-mille", \
+    X(SAI_PWM,        "pwm",        "pwm",   0, TPU_USER_CHANNELS - 1u, 1, 1, 0, 1000, "per-mille", \
       sai_port_pwm_read, sai_port_pwm_write) \
     X(SAI_MOTOR,      "motor",      "motor", 0, MOTOR_COUNT - 1u,    1, 1, -1000, 1000, "per-mille", \
       sai_port_motor_read, sai_port_motor_write) \

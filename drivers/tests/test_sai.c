@@ -101,7 +101,7 @@ static void test_parse_every_kind_long_and_short(void **state)
         {"binary io 12", SAI_BINARY_IO, 12}, {"bio 15", SAI_BINARY_IO, 15},
         {"binary in 3", SAI_BINARY_IN, 3}, {"bin 1", SAI_BINARY_IN, 1},
         {"fast out 7", SAI_FAST_OUT, 7}, {"fast 0", SAI_FAST_OUT, 0},
-        {"pwm 4", SAI_PWM, 4}, {"pwm 15", SAI_PWM, 15},
+        {"pwm 4", SAI_PWM, 4}, {"pwm 14", SAI_PWM, 14},
         {"motor 1", SAI_MOTOR, 1}, {"encoder 0", SAI_ENCODER, 0}, {"enc 2", SAI_ENCODER, 2},
         {"led", SAI_LED, 0}, {"led 0", SAI_LED, 0},
         {"  Analog   IN\t5  ", SAI_ANALOG_IN, 5}, {"MOTOR 2", SAI_MOTOR, 2},
@@ -120,7 +120,7 @@ static void test_parse_rejects_bad_channels(void **state)
 {
     static const char *const bad[] = {
         "", "   ", "analog 5", "analog in", "analog in x", "analog in -1", "analog in 24",
-        "ad 24", "da 6", "bio 16", "binary in 0", "bin 6", "fast out 16", "pwm 16",
+        "ad 24", "da 6", "bio 16", "binary in 0", "bin 6", "fast out 16", "pwm 15",
         "motor 3", "encoder 3", "led 1", "analogin 5", "ad5", "ad 5x", "ad 5 6",
         "ad 1000", "ad 99999999999", "motorbike 1", "binary 3", "in 5", "ad +5",
     };

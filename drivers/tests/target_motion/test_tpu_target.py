@@ -43,6 +43,11 @@ def test_pwm_update_keeps_frequency_and_changes_duty(board):
 
 def test_pwm_bad_arguments(board):
     assert board.send("pwm 16 1000 10") == "err -1"
+    # TP15 is the board support's (the kernel's time stamp reads TCR1 there)
+    assert board.send("pwm 15 1000 10") == "err -1"
+    assert board.send("dout 15 1") == "err -1"
+    assert board.send("qdec 14 15") == "err -1"
+    assert board.get("/tpu", "ch15-duty") == 0
     assert board.send("pwm 6 16 10") == "err -2"
     assert board.send("pwm 6 20001 10") == "err -2"
     assert board.send("pwm 6 1000 1001") == "err -2"
