@@ -13,7 +13,7 @@ def expected_pwm(hz, permille):
 
 
 @pytest.mark.parametrize("ch,hz,permille", [
-    (6, 1000, 250), (7, 50, 500), (15, 20000, 1000), (8, 17, 0), (9, 400, 333), (11, 100, 999)])
+    (6, 1000, 250), (7, 50, 500), (14, 20000, 1000), (8, 17, 0), (9, 400, 333), (11, 100, 999)])
 def test_pwm_duty_and_frequency(board, ch, hz, permille):
     assert board.cmd(f"pwm {ch} {hz} {permille}") == []
     period, high, duty = expected_pwm(hz, permille)
