@@ -16,7 +16,7 @@ static void k_bsched_watchdog(k_ticks_t now)
     struct k_bsched *b = k_bsched_watched;
     if (b == NULL)
         return;
-    if (!b->in_cycle && now == b->next_release) {
+    if (b->measure && !b->in_cycle && now == b->next_release) {
         /* The release of the cycle the thread sleeps for: k_tick's stamp of it. */
         b->release_stamp = k_tick_stamp;
         b->release_stamp_tick = now;
@@ -142,7 +142,8 @@ static void *k_bsched_main(void *arg)
         b->first_pending = 1;
         b->watch = b->next_release + b->period;
         b->in_cycle = 1;
-        ran = bsched_run_cycle(b->sched, k_bsched_invoke, b);
+        ran = b->measure ? bsched_run_cycle(b->sched, k_bsched_invoke, b)
+                         : bsched_run_cycle(b->sched, b->run, b->context);
         b->in_cycle = 0;
         end = k_ticks();
         if (ran < 0) {
@@ -228,7 +229,7 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     if (r == K_OK && k_tick_hook == NULL) {
         k_bsched_watched = b;
         k_tick_hook = k_bsched_watchdog;
-        k_tick_stamping = 1;
+        k_tick_stamping = b->measure ? 1u : 0u;
     }
     return r;
 }

@@ -1145,6 +1145,22 @@ static void test_thread_list(void **state)
     assert_string_equal(one.name, "lister");
 }
 
+/* ---- the B-scheduler thread's timing, on a fake counter ---- */
+
+/* Every read of the fake counter advances it by one count; a process body
+ * advances it by the work it stands for. So a call of a process that does
+ * W counts of work measures exactly W + 1 (the end read), and a release
+ * measures exactly 1: k_tick's stamp, then the first process's start, with
+ * nothing read between. */
+static uint32_t fake_counter;
+static uint32_t fake_reads;
+
+static uint32_t fake_read(void)
+{
+    fake_reads++;
+    return ++fake_counter;
+}
+
 /* ---- the B-scheduler thread ---- */
 
 static struct bsched bs;
@@ -1172,6 +1188,7 @@ static void test_bsched_thread_and_overrun(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 4), BSCHED_OK);
     kb.stop_after = 64;
+    kb.measure = 0;
     assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
     assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 0, stacks[0], STACK_BYTES), K_EINVAL);
     k_start();
@@ -1213,6 +1230,7 @@ static void test_bsched_reports_rate_limited(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
     kb.stop_after = 3000;
+    kb.measure = 0;
     assert_int_equal(k_bsched_start(&kb, &bs, slow_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
     k_start();
     assert_int_equal(kb.cycles_run, 3000);
@@ -1242,8 +1260,14 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
     kb.stop_after = 100;
+    kb.measure = 0; /* timing off: the counter is never read, nothing recorded */
+    fake_reads = 0;
+    k_timestamp_register(fake_read, 1000000u);
     assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
     k_start();
+    assert_int_equal(fake_reads, 0);
+    assert_int_equal(kb.exec[0].runs, 0);
+    assert_int_equal(kb.jitter_samples, 0);
     assert_int_equal(kb.cycles_run, 100);
     assert_int_equal(kb.overruns, 0);
     assert_int_equal(runs_of[0] + runs_of[1], 100); /* one of the two each cycle */
@@ -1252,22 +1276,6 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     assert_null(strstr(host_console, "overrun"));
     assert_null(strstr(host_console, "still running"));
     assert_int_equal(kb.stuck_reports, 0);
-}
-
-/* ---- the B-scheduler thread's timing, on a fake counter ---- */
-
-/* Every read of the fake counter advances it by one count; a process body
- * advances it by the work it stands for. So a call of a process that does
- * W counts of work measures exactly W + 1 (the end read), and a release
- * measures exactly 1: k_tick's stamp, then the first process's start, with
- * nothing read between. */
-static uint32_t fake_counter;
-static uint32_t fake_reads;
-
-static uint32_t fake_read(void)
-{
-    fake_reads++;
-    return ++fake_counter;
 }
 
 /* Work per call: process 0 does 10 counts, process 1 250 (700 in its 5th
@@ -1299,6 +1307,7 @@ static void test_bsched_records_execution_times_and_jitter(void **state)
     assert_int_equal(k_timestamp_hz(), 1000000u);
     assert_int_equal(bsched_init(&bs, pv, 3), BSCHED_OK);
     kb.stop_after = 32;
+    kb.measure = 1;
     assert_int_equal(k_bsched_start(&kb, &bs, timed_process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
     /* before the first cycle: nothing measured, but readable */
     assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
@@ -1364,6 +1373,7 @@ static void test_bsched_jitter_counts_a_late_start(void **state)
     k_timestamp_register(fake_read, 1000000u);
     assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
     kb.stop_after = 32;
+    kb.measure = 1;
     assert_int_equal(k_thread_create(&th[0], "hog", release_hog, NULL, stacks[1], STACK_BYTES,
                                      K_PRIO_APP_MAX + 2u), K_OK);
     assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
@@ -1423,6 +1433,7 @@ static void test_bsched_timing_in_ticks_without_a_counter(void **state)
     assert_int_equal(k_timestamp(), k_ticks());
     assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
     kb.stop_after = 8;
+    kb.measure = 1;
     assert_int_equal(k_bsched_start(&kb, &bs, three_tick_process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
     k_start();
     assert_int_equal(k_bsched_wcet(&kb, 0, &worst, &runs), K_OK);

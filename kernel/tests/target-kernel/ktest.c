@@ -858,6 +858,7 @@ static void *controller(void *arg)
     k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
     bsched_init(&bs, pv, 4);
     kb.stop_after = TIMING_CYCLES;
+    kb.measure = 1;
     k_bsched_start(&kb, &bs, process, NULL, TIMING_PERIOD, stack_b, STACK_BYTES);
     k_thread_join(&kb.thread, NULL, K_FOREVER);
     stop_spinning = 1;
