@@ -6,7 +6,9 @@
  * Overrun: a minor cycle still running when the next release is due. Each
  * missed release is counted; the late cycle's successor starts at the next
  * release still ahead (missed releases are not run back to back, which would
- * only make the lateness worse). Overruns are reported on the console by a
+ * only make the lateness worse); the cycle itself is never cut short, and the
+ * set's phase advances one minor cycle per cycle run, not per release (a
+ * missed release runs nothing). Overruns are reported on the console by a
  * reporter thread just below the B-scheduler thread's priority, so that the
  * report (about a millisecond of output formatting) never delays a cycle;
  * its line names the overrun cycle, how late it ended and the totals.
