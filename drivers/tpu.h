@@ -27,7 +27,7 @@
 
 #include <stdint.h>
 
-#include "boards/robocube/mc68332.h"
+#include "boards/robocube/tpu_stamp.h"
 
 #define TPU_CHANNELS      16u
 /* The channels this driver serves: TP0 .. TPU_USER_CHANNELS - 1. */

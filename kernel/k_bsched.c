@@ -253,9 +253,9 @@ int k_bsched_wcet(const struct k_bsched *b, uint16_t index, uint32_t *worst, uin
 
 /* (hi:lo) / d for d > 0, saturated to 32 bits, in 32-bit operations: the
  * kernel calls no compiler routine (64-bit division is one on both CPUs). */
-static uint32_t k_bsched_div64(uint32_t hi, uint32_t lo, uint32_t d)
+static uint32_t k_bsched_div64(uint32_t hi, uint32_t low, uint32_t d)
 {
-    uint32_t q = 0, r = hi, i;
+    uint32_t q = 0, r = hi, lo = low, i;
     if (hi >= d)
         return 0xFFFFFFFFu;
     for (i = 0; i < 32u; i++) {

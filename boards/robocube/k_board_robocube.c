@@ -24,6 +24,7 @@
 #include "boards/robocube/duart.h"
 #include "boards/robocube/duart_console.h"
 #include "boards/robocube/pit.h"
+#include "boards/robocube/tpu_stamp.h"
 
 #define DUART_IMR_TXRDYB 0x10u
 #define DUART_ISR_TXRDYB 0x10u

@@ -98,12 +98,6 @@
 #define ROBOCUBE_TPURAM_BASE 0xF20000u
 #define ROBOCUBE_TPURAM_SIZE 0x800u
 
-/* The TPU channel the kernel's board support reads TCR1 through (its fine
- * time stamp, k_timestamp): the TPU driver refuses it. TCR1's rate at
- * TPUMCR 0x4ACD and fsys = 16.777216 MHz. */
-#define ROBOCUBE_TPU_STAMP_CHANNEL 15u
-#define ROBOCUBE_TCR1_HZ 1048576u
-
 /* Interrupt vectors the firmware assigns (the CPU32 user vectors start at 64). */
 #define VECTOR_PIT 64u
 #define IRQ_LEVEL_PIT 4u
