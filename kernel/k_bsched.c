@@ -14,7 +14,16 @@ static struct k_bsched *k_bsched_watched;
 static void k_bsched_watchdog(k_ticks_t now)
 {
     struct k_bsched *b = k_bsched_watched;
-    if (b == NULL || !b->in_cycle || now != b->watch)
+    if (b == NULL)
+        return;
+    if (b->measure && !b->in_cycle && now == b->next_release) {
+        /* The release of the cycle the thread sleeps for: k_tick's stamp of it. */
+        b->release_stamp = k_tick_stamp;
+        b->release_stamp_tick = now;
+        b->release_stamped = 1;
+        return;
+    }
+    if (!b->in_cycle || now != b->watch)
         return;
     b->stuck_cycle = b->cycles_run;
     b->stuck_tick = now;
@@ -78,6 +87,44 @@ static void *k_bsched_reporter(void *arg)
     }
 }
 
+/* One jitter sample: smallest, largest and the 64-bit sum in two words. */
+static void k_bsched_jitter_sample(struct k_bsched *b, uint32_t jitter)
+{
+    if (b->jitter_samples == 0u || jitter < b->jitter_min)
+        b->jitter_min = jitter;
+    if (jitter > b->jitter_max)
+        b->jitter_max = jitter;
+    b->jitter_sum_lo += jitter;
+    if (b->jitter_sum_lo < jitter)
+        b->jitter_sum_hi++;
+    b->jitter_samples++;
+}
+
+/* What bsched_run_cycle calls for each process: the caller's process
+ * function between two time stamps; the first of a cycle also closes its
+ * release jitter. */
+static void k_bsched_invoke(void *context, uint16_t index)
+{
+    struct k_bsched *b = context;
+    uint32_t begin = k_timestamp();
+    uint32_t took;
+    if (b->first_pending) {
+        b->first_pending = 0;
+        /* Only a stamp of this cycle's own release tick counts (the hook
+         * stamps the watched instance only). */
+        if (b->release_stamped && b->release_stamp_tick == b->release)
+            k_bsched_jitter_sample(b, begin - b->release_stamp);
+    }
+    b->run(b->context, index);
+    took = k_timestamp() - begin;
+    if (index < BSCHED_MAX_PROCS) {
+        struct k_bsched_exec *e = &b->exec[index];
+        if (took > e->worst)
+            e->worst = took;
+        e->runs++;
+    }
+}
+
 static void *k_bsched_main(void *arg)
 {
     struct k_bsched *b = arg;
@@ -91,9 +138,12 @@ static void *k_bsched_main(void *arg)
         int32_t ran;
         (void)k_sleep_until(b->next_release);
         start = k_ticks();
+        b->release = b->next_release;
+        b->first_pending = 1;
         b->watch = b->next_release + b->period;
         b->in_cycle = 1;
-        ran = bsched_run_cycle(b->sched, b->run, b->context);
+        ran = b->measure ? bsched_run_cycle(b->sched, k_bsched_invoke, b)
+                         : bsched_run_cycle(b->sched, b->run, b->context);
         b->in_cycle = 0;
         end = k_ticks();
         if (ran < 0) {
@@ -119,6 +169,7 @@ static void *k_bsched_main(void *arg)
     }
     if (k_bsched_watched == b) {
         k_tick_hook = NULL;
+        k_tick_stamping = 0;
         k_bsched_watched = NULL;
     }
     b->finished = 1;
@@ -155,6 +206,17 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     b->stuck_printed = 0;
     b->report_lines = 0;
     b->next_report = k_ticks();
+    k_memset(b->exec, 0, sizeof b->exec);
+    b->jitter_min = 0;
+    b->jitter_max = 0;
+    b->jitter_samples = 0;
+    b->jitter_sum_lo = 0;
+    b->jitter_sum_hi = 0;
+    b->release = 0;
+    b->first_pending = 0;
+    b->release_stamp = 0;
+    b->release_stamp_tick = 0;
+    b->release_stamped = 0;
     r = k_sem_init(&b->report_sem, 0, 1);
     if (r == K_OK)
         r = k_sem_init(&b->finish_sem, 0, 1);
@@ -167,6 +229,68 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     if (r == K_OK && k_tick_hook == NULL) {
         k_bsched_watched = b;
         k_tick_hook = k_bsched_watchdog;
+        k_tick_stamping = b->measure ? 1u : 0u;
     }
     return r;
+}
+
+int k_bsched_wcet(const struct k_bsched *b, uint16_t index, uint32_t *worst, uint32_t *runs)
+{
+    uint32_t irq, w, n;
+    if (b == NULL || b->sched == NULL || index >= b->sched->count || index >= BSCHED_MAX_PROCS)
+        return K_EINVAL;
+    /* The pair as one: the thread is more urgent than most callers. */
+    irq = k_arch_irq_save();
+    w = b->exec[index].worst;
+    n = b->exec[index].runs;
+    k_arch_irq_restore(irq);
+    if (worst != NULL)
+        *worst = w;
+    if (runs != NULL)
+        *runs = n;
+    return K_OK;
+}
+
+/* (hi:lo) / d for d > 0, saturated to 32 bits, in 32-bit operations: the
+ * kernel calls no compiler routine (64-bit division is one on both CPUs). */
+static uint32_t k_bsched_div64(uint32_t hi, uint32_t low, uint32_t d)
+{
+    uint32_t q = 0, r = hi, lo = low, i;
+    if (hi >= d)
+        return 0xFFFFFFFFu;
+    for (i = 0; i < 32u; i++) {
+        uint32_t carry = r >> 31;
+        r = (r << 1) | (lo >> 31);
+        lo <<= 1;
+        q <<= 1;
+        if (carry != 0u || r >= d) {
+            r -= d;
+            q |= 1u;
+        }
+    }
+    return q;
+}
+
+int k_bsched_jitter(const struct k_bsched *b, uint32_t *min, uint32_t *max, uint32_t *mean,
+                    uint32_t *samples)
+{
+    uint32_t irq, lo, hi, n, jmin, jmax;
+    if (b == NULL)
+        return K_EINVAL;
+    irq = k_arch_irq_save();
+    n = b->jitter_samples;
+    jmin = b->jitter_min;
+    jmax = b->jitter_max;
+    lo = b->jitter_sum_lo;
+    hi = b->jitter_sum_hi;
+    k_arch_irq_restore(irq);
+    if (min != NULL)
+        *min = jmin;
+    if (max != NULL)
+        *max = jmax;
+    if (mean != NULL)
+        *mean = n != 0u ? k_bsched_div64(hi, lo, n) : 0u;
+    if (samples != NULL)
+        *samples = n;
+    return K_OK;
 }

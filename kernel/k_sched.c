@@ -12,6 +12,11 @@
 struct k_kernel k_kernel;
 struct k_stats k_stats;
 void (*volatile k_tick_hook)(k_ticks_t now);
+volatile uint32_t k_tick_stamp;
+volatile uint8_t k_tick_stamping;
+/* The registered fine counter (k_timestamp_register); none after k_init. */
+static k_timestamp_fn k_timestamp_read;
+static uint32_t k_timestamp_rate;
 
 K_STACK_DEFINE(k_idle_stack, K_IDLE_STACK_BYTES);
 
@@ -516,6 +521,8 @@ void k_tick(void)
     k_ticks_t now = k_kernel.ticks + 1u;
 
     k_kernel.ticks = now;
+    if (k_tick_stamping != 0u)
+        k_tick_stamp = k_timestamp();
     k_stats.ticks_isr++;
     if (++k_kernel.subticks == K_TICK_HZ) {
         k_kernel.subticks = 0;
@@ -546,6 +553,26 @@ void k_tick(void)
 k_ticks_t k_ticks(void)
 {
     return k_kernel.ticks;
+}
+
+void k_timestamp_register(k_timestamp_fn read, uint32_t hz)
+{
+    uint32_t s = k_arch_irq_save();
+    /* Both or neither: a read without its rate would give counts of no known unit. */
+    k_timestamp_read = hz != 0u ? read : NULL;
+    k_timestamp_rate = read != NULL ? hz : 0u;
+    k_arch_irq_restore(s);
+}
+
+uint32_t k_timestamp(void)
+{
+    k_timestamp_fn read = k_timestamp_read;
+    return read != NULL ? read() : k_kernel.ticks;
+}
+
+uint32_t k_timestamp_hz(void)
+{
+    return k_timestamp_read != NULL ? k_timestamp_rate : (uint32_t)K_TICK_HZ;
 }
 
 uint32_t k_uptime_ms(void)
@@ -749,6 +776,10 @@ void k_init(void)
     k_memset(&k_kernel, 0, sizeof k_kernel);
     k_memset(&k_stats, 0, sizeof k_stats);
     k_tick_hook = NULL;
+    k_tick_stamping = 0;
+    k_tick_stamp = 0;
+    k_timestamp_read = NULL;
+    k_timestamp_rate = 0;
     k_prioq_init(&k_kernel.ready);
     k_tlist_init(&k_kernel.timers);
     k_thread_setup(&k_kernel.idle, "idle", k_idle_main, NULL, k_idle_stack,

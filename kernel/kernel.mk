@@ -52,9 +52,9 @@ K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c kernel/arch/cpu
 K_TARGET_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(K_TARGET_SRCS))
 # Test modes of kernel/tests/target-kernel/ktest.c (KTEST_MODE = position).
 K_TEST_MODES := preempt priority semaphore inherit queue drift overrun stackguard baduse measure \
-                overload tcbguard nesting
+                overload tcbguard nesting timing
 K_TEST_ELFS  := $(patsubst %,$(K_BUILD)/target/ktest-%.elf,$(K_TEST_MODES))
-k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10 11 12 13,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
+k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10 11 12 13 14,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
 
 CHECKS += kernel-target
 EMU_CHECKS += kernel-target

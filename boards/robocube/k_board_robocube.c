@@ -24,6 +24,7 @@
 #include "boards/robocube/duart.h"
 #include "boards/robocube/duart_console.h"
 #include "boards/robocube/pit.h"
+#include "boards/robocube/tpu_stamp.h"
 
 #define DUART_IMR_TXRDYB 0x10u
 #define DUART_ISR_TXRDYB 0x10u
@@ -183,11 +184,77 @@ uint32_t k_board_console_dropped(void)
     return k_console.drops;
 }
 
+/* ---- the kernel's fine time stamp: TCR1 through TPU channel 15 ----
+ *
+ * TCR1 (16 bits, 1.048576 MHz: 0.954 us a count, once round in 62.5 ms)
+ * is the MC68332's finest free-running counter (the PIT's count cannot be
+ * read); the CPU reads it through a time function: QDEC's host service 01
+ * copies TCR1 into the channel's TCR1_VALUE (parameter 2). The channel runs
+ * nothing else and is never initialised (HSR 11): its pointers aim at its
+ * own parameters, so an edge on the TP15 pin, if the microcode served one,
+ * would write only there. The 16 bits are extended to 32 here, which holds
+ * while a read comes at least once a round: the tick reads every
+ * K_BOARD_STAMP_EVERY ticks (1/32 s at most). On a real chip the copy
+ * waits for the TPU's scheduler (microseconds when other channels are
+ * busy): a stamp is TCR1 at that service, not at the write. The emulator
+ * serves it at once. */
+#define K_BOARD_STAMP_CH ROBOCUBE_TPU_STAMP_CHANNEL
+#define K_BOARD_STAMP_TRIES 64u  /* polls of HSRR before a stale TCR1_VALUE is taken */
+#define K_BOARD_STAMP_EVERY ((K_TICK_HZ + 31u) / 32u)
+#if K_TICK_HZ < 32
+#error "the TCR1 extension needs a tick of at least 32 Hz (a read every 1/32 s)"
+#endif
+static uint16_t k_stamp_last;   /* TCR1 at the last read */
+static uint32_t k_stamp_high;   /* the rounds before it, in the upper 16 bits */
+static uint32_t k_stamp_countdown;
+
+static uint32_t k_board_timestamp(void)
+{
+    uint32_t irq = k_arch_irq_save();
+    uint32_t stamp;
+    unsigned tries = 0;
+    uint16_t now;
+    MC68332_TPU_HSRR0 = MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 1u); /* other fields 00: untouched */
+    while ((MC68332_TPU_HSRR0 & MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u)) != 0u &&
+           tries < K_BOARD_STAMP_TRIES)
+        tries++;
+    now = MC68332_TPU_PARAM(K_BOARD_STAMP_CH, 2u);
+    if (now < k_stamp_last)
+        k_stamp_high += 0x10000u;
+    k_stamp_last = now;
+    stamp = k_stamp_high | now;
+    k_arch_irq_restore(irq);
+    return stamp;
+}
+
+static void k_board_timestamp_init(void)
+{
+    uint32_t irq = k_arch_irq_save();
+    MC68332_TPUMCR = MC68332_TPUMCR_CUBEOS;
+    MC68332_TPU_CPR0 = (uint16_t)(MC68332_TPU_CPR0 & ~MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u));
+    MC68332_TPU_CFSR0 = (uint16_t)((MC68332_TPU_CFSR0 & 0x0FFFu) | (MC68332_TPU_FN_QDEC << 12));
+    MC68332_TPU_HSQR0 = (uint16_t)(MC68332_TPU_HSQR0 & ~MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u));
+    /* CORR_PINSTATE_ADDR: its own word 3; EDGE_TIME_LSB_ADDR: its own word 0. */
+    MC68332_TPU_PARAM(K_BOARD_STAMP_CH, 4u) = (uint16_t)(16u * K_BOARD_STAMP_CH + 6u);
+    MC68332_TPU_PARAM(K_BOARD_STAMP_CH, 5u) = (uint16_t)(16u * K_BOARD_STAMP_CH + 1u);
+    MC68332_TPU_PARAM(K_BOARD_STAMP_CH, 2u) = 0;
+    MC68332_TPU_CPR0 = (uint16_t)(MC68332_TPU_CPR0 | MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u));
+    k_stamp_last = 0;
+    k_stamp_high = 0;
+    k_stamp_countdown = K_BOARD_STAMP_EVERY;
+    k_arch_irq_restore(irq);
+    (void)k_board_timestamp();
+}
+
 /* PIT hook: runs inside the kernel's interrupt entry (k_board_pit_isr). */
 static void k_board_tick(uint32_t ticks)
 {
     void (*cb)(void);
     (void)ticks;
+    if (--k_stamp_countdown == 0u) {
+        k_stamp_countdown = K_BOARD_STAMP_EVERY;
+        (void)k_board_timestamp(); /* keeps the extension of TCR1 to 32 bits */
+    }
     k_tick();
     cb = k_board_tick_callback;
     if (cb != NULL)
@@ -222,5 +289,7 @@ int k_board_init(void)
         k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     k_console_register(k_board_console_write, k_board_console_write_sync);
+    k_board_timestamp_init();
+    k_timestamp_register(k_board_timestamp, ROBOCUBE_TCR1_HZ);
     return pit_start(K_TICK_HZ, k_board_tick);
 }

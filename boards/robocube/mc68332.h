@@ -75,6 +75,21 @@
 #define QSM_QILR     MC68332_REG8(0xFFFC04u)
 #define QSM_QIVR     MC68332_REG8(0xFFFC05u)
 
+/* ---- TPU: base 0xFFFE00, parameter RAM 0xFFFF00 (only what the board
+ * support touches; drivers/tpu_regs.h has the rest for the TPU driver) ---- */
+#define MC68332_TPUMCR   MC68332_REG16(0xFFFE00u)
+#define MC68332_TPU_CFSR0 MC68332_REG16(0xFFFE0Cu) /* channels 12-15, ch 15 in bits 15-12 */
+#define MC68332_TPU_HSQR0 MC68332_REG16(0xFFFE14u) /* channels 8-15, 2 bits each */
+#define MC68332_TPU_HSRR0 MC68332_REG16(0xFFFE18u)
+#define MC68332_TPU_CPR0  MC68332_REG16(0xFFFE1Cu)
+/* Channel ch (8..15), its field in the two-bit registers above. */
+#define MC68332_TPU_FIELD2(ch, v) ((uint16_t)((unsigned)(v) << (2u * ((ch) - 8u))))
+/* Channel ch, parameter word k. */
+#define MC68332_TPU_PARAM(ch, k) MC68332_REG16(0xFFFF00u + 16u * (ch) + 2u * (k))
+/* TPUMCR as CubeOS set it (the TPU driver writes the same): TCR1 = fsys/16. */
+#define MC68332_TPUMCR_CUBEOS 0x4ACDu
+#define MC68332_TPU_FN_QDEC 0x6u
+
 /* ---- Values the RoboCube v2.0 firmware programs (see start.S) ---- */
 #define ROBOCUBE_FLASH_BASE  0xE00000u
 #define ROBOCUBE_FLASH_SIZE  0x100000u

@@ -19,7 +19,9 @@
  * here instead (see k_console_isr).
  *
  * The tick: SysTick from the 168 MHz core clock at K_TICK_HZ, kernel level 4
- * (below the console, as the PIT is below the DUART on the RoboCube).
+ * (below the console, as the PIT is below the DUART on the RoboCube). The
+ * kernel's fine time stamp (k_timestamp) counts the same clock through
+ * SysTick (armv7m_systick_cycles), at 168 MHz.
  */
 #include "kernel.h"
 #include "k_board.h"
@@ -178,5 +180,11 @@ int k_board_init(void)
     if (k_irq_register(ARMV7M_IRQ_VECTOR(USART1_IRQ), CONSOLE_LEVEL, k_console_isr, NULL) != K_OK)
         return -1;
     k_console_register(stm32_console_write, stm32_console_write_sync);
-    return armv7m_systick_start(STM32F405_CPU_HZ, K_TICK_HZ, k_board_tick);
+    if (armv7m_systick_start(STM32F405_CPU_HZ, K_TICK_HZ, k_board_tick) != 0)
+        return -1;
+    /* The kernel's fine time stamp: processor clocks, from SysTick. Not
+     * the DWT's cycle counter: QEMU 7.2 has no DWT (its registers read as
+     * 0); SysTick's count it models, in virtual time. */
+    k_timestamp_register(armv7m_systick_cycles, STM32F405_CPU_HZ);
+    return 0;
 }

@@ -57,6 +57,20 @@ struct k_timespec {
 k_ticks_t k_ticks(void);
 /* Milliseconds since k_init (wraps after 2^32 ms = 49.7 days). */
 uint32_t k_uptime_ms(void);
+/* Fine time stamps, for measuring what takes less than a tick: a
+ * free-running counter the board registers at init (k_board_init), as it
+ * registers the console; the kernel calls no board. read returns the count,
+ * which must run through all 32 bits (a board whose counter is narrower
+ * extends it) and may be called in any context, interrupts masked or not;
+ * hz is its rate. Differences of two stamps are valid up to 2^32 counts.
+ * Until a board registers one (k_init forgets it), or when read is NULL or
+ * hz 0, k_timestamp is k_ticks() and k_timestamp_hz K_TICK_HZ: what is
+ * measured with it comes in whole ticks. */
+typedef uint32_t (*k_timestamp_fn)(void);
+void k_timestamp_register(k_timestamp_fn read, uint32_t hz);
+/* The counter now, in counts of k_timestamp_hz(). */
+uint32_t k_timestamp(void);
+uint32_t k_timestamp_hz(void);
 /* Monotonic time since k_init, resolution one tick. Only K_CLOCK_MONOTONIC. */
 int k_clock_gettime(int clock_id, struct k_timespec *ts);
 /* Sleeps at least *req (rounded up to whole ticks, plus the running tick). */
@@ -297,6 +311,11 @@ void k_tick(void);
  * interrupt mask back at the tick's level (the B-scheduler thread's
  * watchdog uses it). NULL when unused. */
 extern void (*volatile k_tick_hook)(k_ticks_t now);
+/* While k_tick_stamping is nonzero, k_tick stores k_timestamp() in
+ * k_tick_stamp as it counts each tick, before it wakes anyone: the
+ * B-scheduler thread measures its release jitter from there. */
+extern volatile uint32_t k_tick_stamp;
+extern volatile uint8_t k_tick_stamping;
 
 /* ---- start-up ---- */
 /* Resets the kernel (no thread runs yet). */

@@ -23,6 +23,7 @@
 #define SCB_MMFAR  ARMV7M_REG32(0xE000ED34u)
 #define SCB_BFAR   ARMV7M_REG32(0xE000ED38u)
 #define ICSR_PENDSVSET (1u << 28)
+#define ICSR_PENDSTSET (1u << 26) /* SysTick pending */
 #define AIRCR_VECTKEY  (0x05FAu << 16)
 #define AIRCR_SYSRESETREQ (1u << 2)
 #define CCR_DIV_0_TRP  (1u << 4)
@@ -100,6 +101,13 @@ extern const unsigned armv7m_irq_lines;
  * k_isr_exit). Returns 0, or -1 when the count does not fit SysTick's
  * 24 bits. */
 int armv7m_systick_start(uint32_t cpu_hz, uint32_t tick_hz, void (*fn)(void));
+/* Processor clocks since armv7m_systick_start, modulo 2^32 (25.6 s at
+ * 168 MHz), from SysTick: its wraps, counted by the tick interrupt, times
+ * its period, plus the current count. Any context; valid while no wrap goes
+ * unserved for a whole period (interrupts masked for less than a tick). A
+ * board registers it as the kernel's fine time stamp (k_timestamp_register)
+ * at its processor clock. */
+uint32_t armv7m_systick_cycles(void);
 
 /* Every device interrupt's vector entry: dispatches the handler registered
  * for the active NVIC line through k_isr_enter/k_isr_exit. */

@@ -32,6 +32,9 @@ extern uint32_t *const k_arch_irq_stack_top;
 uint32_t *const k_arch_irq_stack_top = k_irq_stack + K_IRQ_STACK_WORDS;
 
 static void (*volatile armv7m_tick_fn)(void);
+/* SysTick wraps served, and clocks per wrap (reload + 1): armv7m_systick_cycles. */
+static volatile uint32_t armv7m_systick_wraps;
+static uint32_t armv7m_systick_period;
 
 /* Initial frame, from the lowest address: BASEPRI, R4-R11 (the software
  * frame switch.S pops), then R0-R3, R12, LR, PC, xPSR (the exception
@@ -168,6 +171,7 @@ void armv7m_systick(void)
 {
     void (*fn)(void) = armv7m_tick_fn;
     k_isr_enter();
+    armv7m_systick_wraps++; /* before fn: the kernel's tick may read the time */
     if (fn != NULL)
         fn();
     k_isr_exit();
@@ -185,12 +189,30 @@ int armv7m_systick_start(uint32_t cpu_hz, uint32_t tick_hz, void (*fn)(void))
     if (reload == 0u || reload > SYST_RVR_MAX)
         return -1;
     armv7m_tick_fn = fn;
+    armv7m_systick_wraps = 0;
+    armv7m_systick_period = reload + 1u;
     SCB_SHPR(ARMV7M_EXC_SYSTICK) = K_ARCH_LEVEL_PRIO(ARMV7M_TICK_LEVEL);
     SYST_CSR = 0;
     SYST_RVR = reload;
     SYST_CVR = 0;
     SYST_CSR = SYST_CSR_CLKSOURCE | SYST_CSR_TICKINT | SYST_CSR_ENABLE;
     return 0;
+}
+
+uint32_t armv7m_systick_cycles(void)
+{
+    uint32_t irq = k_arch_irq_save(); /* masks SysTick (level 4) */
+    uint32_t wraps = armv7m_systick_wraps;
+    uint32_t count = SYST_CVR;
+    /* A wrap whose interrupt waits (pending, masked): the count read may be
+     * from before it or after; the one read now is after it. A wrap after
+     * the pending bit was read leaves the first count from before it. */
+    if ((SCB_ICSR & ICSR_PENDSTSET) != 0u) {
+        count = SYST_CVR;
+        wraps++;
+    }
+    k_arch_irq_restore(irq);
+    return wraps * armv7m_systick_period + (armv7m_systick_period - 1u - count);
 }
 
 const uint32_t *k_arch_irq_stack(size_t *words)

@@ -1145,6 +1145,22 @@ static void test_thread_list(void **state)
     assert_string_equal(one.name, "lister");
 }
 
+/* ---- the B-scheduler thread's timing, on a fake counter ---- */
+
+/* Every read of the fake counter advances it by one count; a process body
+ * advances it by the work it stands for. So a call of a process that does
+ * W counts of work measures exactly W + 1 (the end read), and a release
+ * measures exactly 1: k_tick's stamp, then the first process's start, with
+ * nothing read between. */
+static uint32_t fake_counter;
+static uint32_t fake_reads;
+
+static uint32_t fake_read(void)
+{
+    fake_reads++;
+    return ++fake_counter;
+}
+
 /* ---- the B-scheduler thread ---- */
 
 static struct bsched bs;
@@ -1172,6 +1188,7 @@ static void test_bsched_thread_and_overrun(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 4), BSCHED_OK);
     kb.stop_after = 64;
+    kb.measure = 0;
     assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
     assert_int_equal(k_bsched_start(&kb, &bs, process, NULL, 0, stacks[0], STACK_BYTES), K_EINVAL);
     k_start();
@@ -1213,6 +1230,7 @@ static void test_bsched_reports_rate_limited(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
     kb.stop_after = 3000;
+    kb.measure = 0;
     assert_int_equal(k_bsched_start(&kb, &bs, slow_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
     k_start();
     assert_int_equal(kb.cycles_run, 3000);
@@ -1242,8 +1260,14 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     memset(runs_of, 0, sizeof runs_of);
     assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
     kb.stop_after = 100;
+    kb.measure = 0; /* timing off: the counter is never read, nothing recorded */
+    fake_reads = 0;
+    k_timestamp_register(fake_read, 1000000u);
     assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
     k_start();
+    assert_int_equal(fake_reads, 0);
+    assert_int_equal(kb.exec[0].runs, 0);
+    assert_int_equal(kb.jitter_samples, 0);
     assert_int_equal(kb.cycles_run, 100);
     assert_int_equal(kb.overruns, 0);
     assert_int_equal(runs_of[0] + runs_of[1], 100); /* one of the two each cycle */
@@ -1252,6 +1276,175 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     assert_null(strstr(host_console, "overrun"));
     assert_null(strstr(host_console, "still running"));
     assert_int_equal(kb.stuck_reports, 0);
+}
+
+/* Work per call: process 0 does 10 counts, process 1 250 (700 in its 5th
+ * call), process 2 3000, spread over two ticks. */
+static void timed_process(void *context, uint16_t index)
+{
+    (void)context;
+    runs_of[index]++;
+    if (index == 0u) {
+        fake_counter += 10u;
+    } else if (index == 1u) {
+        fake_counter += runs_of[1] == 5u ? 700u : 250u;
+    } else {
+        fake_counter += 1000u;
+        host_tick();
+        fake_counter += 2000u;
+    }
+}
+
+static void test_bsched_records_execution_times_and_jitter(void **state)
+{
+    const uint8_t pv[] = {0, 1, 3};
+    uint32_t worst = 0, runs = 0, jmin = 9, jmax = 9, jmean = 9, samples = 0;
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    fake_counter = 0xFFFFF000u; /* wraps during the run: differences still hold */
+    fake_reads = 0;
+    k_timestamp_register(fake_read, 1000000u);
+    assert_int_equal(k_timestamp_hz(), 1000000u);
+    assert_int_equal(bsched_init(&bs, pv, 3), BSCHED_OK);
+    kb.stop_after = 32;
+    kb.measure = 1;
+    assert_int_equal(k_bsched_start(&kb, &bs, timed_process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
+    /* before the first cycle: nothing measured, but readable */
+    assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
+    assert_int_equal(worst, 0);
+    assert_int_equal(runs, 0);
+    k_start();
+    assert_int_equal(kb.cycles_run, 32);
+    assert_int_equal(kb.overruns, 0);
+    assert_int_equal(k_bsched_wcet(&kb, 0, &worst, &runs), K_OK);
+    assert_int_equal(worst, 11);
+    assert_int_equal(runs, 32);
+    assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
+    assert_int_equal(worst, 701);
+    assert_int_equal(runs, 16);
+    /* the tick inside process 2 was stamped too (k_tick reads the counter) */
+    assert_int_equal(k_bsched_wcet(&kb, 2, &worst, &runs), K_OK);
+    assert_int_equal(worst, 3002);
+    assert_int_equal(runs, 4);
+    assert_int_equal(runs_of[2], 4);
+    /* every cycle runs process 0: one sample each, all exactly one read */
+    assert_int_equal(k_bsched_jitter(&kb, &jmin, &jmax, &jmean, &samples), K_OK);
+    assert_int_equal(samples, 32);
+    assert_int_equal(jmin, 1);
+    assert_int_equal(jmax, 1);
+    assert_int_equal(jmean, 1);
+    /* NULL pointers are allowed; bad index and instance are not */
+    assert_int_equal(k_bsched_wcet(&kb, 2, NULL, NULL), K_OK);
+    assert_int_equal(k_bsched_jitter(&kb, NULL, NULL, NULL, NULL), K_OK);
+    assert_int_equal(k_bsched_wcet(&kb, 3, &worst, &runs), K_EINVAL);
+    assert_int_equal(k_bsched_wcet(NULL, 0, &worst, &runs), K_EINVAL);
+    assert_int_equal(k_bsched_jitter(NULL, &jmin, NULL, NULL, NULL), K_EINVAL);
+    /* the stamping ended with the thread: ticks after it read nothing */
+    assert_int_equal(k_tick_stamping, 0);
+    {
+        uint32_t reads = fake_reads;
+        host_tick();
+        assert_int_equal(fake_reads, reads);
+    }
+}
+
+/* A more urgent thread holds the CPU for 400 counts at the releases of
+ * ticks 1, 9, 17 and 25: the jitter of those cycles is 401, the others' 1. */
+static void *release_hog(void *arg)
+{
+    k_ticks_t next = 1u;
+    int i;
+    (void)arg;
+    for (i = 0; i < 4; i++) {
+        (void)k_sleep_until(next);
+        fake_counter += 400u;
+        next += 8u;
+    }
+    return NULL;
+}
+
+static void test_bsched_jitter_counts_a_late_start(void **state)
+{
+    const uint8_t pv[] = {0};
+    uint32_t jmin = 0, jmax = 0, jmean = 0, samples = 0;
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    fake_counter = 0;
+    k_timestamp_register(fake_read, 1000000u);
+    assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
+    kb.stop_after = 32;
+    kb.measure = 1;
+    assert_int_equal(k_thread_create(&th[0], "hog", release_hog, NULL, stacks[1], STACK_BYTES,
+                                     K_PRIO_APP_MAX + 2u), K_OK);
+    assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
+    k_start();
+    assert_int_equal(kb.cycles_run, 32);
+    assert_int_equal(runs_of[0], 32);
+    assert_int_equal(k_bsched_jitter(&kb, &jmin, &jmax, &jmean, &samples), K_OK);
+    assert_int_equal(samples, 32);
+    assert_int_equal(jmin, 1);
+    assert_int_equal(jmax, 401);
+    /* releases at ticks 1..32, the hog at 4 of them: (4 x 401 + 28 x 1) / 32 */
+    assert_int_equal(jmean, 51);
+}
+
+/* The mean over a sum beyond 32 bits (the division is the kernel's own). */
+static void test_bsched_jitter_mean_of_a_large_sum(void **state)
+{
+    uint32_t jmean = 0, samples = 0;
+    (void)state;
+    memset(&kb, 0, sizeof kb);
+    kb.jitter_samples = 3u;
+    kb.jitter_sum_hi = 2u;          /* 0x2_0000_0001 = 8589934593 */
+    kb.jitter_sum_lo = 1u;
+    assert_int_equal(k_bsched_jitter(&kb, NULL, NULL, &jmean, &samples), K_OK);
+    assert_int_equal(jmean, 2863311531u);
+    assert_int_equal(samples, 3);
+    kb.jitter_samples = 2u;         /* a quotient above 32 bits saturates */
+    assert_int_equal(k_bsched_jitter(&kb, NULL, NULL, &jmean, NULL), K_OK);
+    assert_int_equal(jmean, 0xFFFFFFFFu);
+    kb.jitter_samples = 7u;
+    kb.jitter_sum_hi = 6u;
+    kb.jitter_sum_lo = 0xFFFFFFFFu; /* 0x6_FFFF_FFFF / 7 = 4294967295.86: the largest that fits */
+    assert_int_equal(k_bsched_jitter(&kb, NULL, NULL, &jmean, NULL), K_OK);
+    assert_int_equal(jmean, 0xFFFFFFFFu);
+}
+
+/* No counter registered: the same records come in whole ticks. */
+static void three_tick_process(void *context, uint16_t index)
+{
+    (void)context;
+    runs_of[index]++;
+    if (index == 1u) {
+        host_tick();
+        host_tick();
+        host_tick();
+    }
+}
+
+static void test_bsched_timing_in_ticks_without_a_counter(void **state)
+{
+    const uint8_t pv[] = {0, 1};
+    uint32_t worst = 9, runs = 0, jmax = 9, samples = 0;
+    (void)state;
+    memset(runs_of, 0, sizeof runs_of);
+    k_timestamp_register(fake_read, 0u); /* no rate: not registered */
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ);
+    assert_int_equal(k_timestamp(), k_ticks());
+    assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
+    kb.stop_after = 8;
+    kb.measure = 1;
+    assert_int_equal(k_bsched_start(&kb, &bs, three_tick_process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
+    k_start();
+    assert_int_equal(k_bsched_wcet(&kb, 0, &worst, &runs), K_OK);
+    assert_int_equal(worst, 0);
+    assert_int_equal(runs, 8);
+    assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
+    assert_int_equal(worst, 3);
+    assert_int_equal(runs, 4);
+    assert_int_equal(k_bsched_jitter(&kb, NULL, &jmax, NULL, &samples), K_OK);
+    assert_int_equal(samples, 8);
+    assert_int_equal(jmax, 0);
 }
 
 int main(void)
@@ -1291,6 +1484,10 @@ int main(void)
         T(test_thread_list),
         T(test_bsched_thread_and_overrun),
         T(test_bsched_thread_no_overrun_when_fast),
+        T(test_bsched_records_execution_times_and_jitter),
+        T(test_bsched_jitter_counts_a_late_start),
+        T(test_bsched_jitter_mean_of_a_large_sum),
+        T(test_bsched_timing_in_ticks_without_a_counter),
         T(test_bsched_reports_rate_limited),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

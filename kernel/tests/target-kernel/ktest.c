@@ -29,6 +29,7 @@
 #define KTEST_OVERLOAD  11
 #define KTEST_TCBGUARD  12
 #define KTEST_NESTING   13
+#define KTEST_TIMING    14
 
 #define STACK_BYTES 2048u
 K_STACK_DEFINE(stack_main, STACK_BYTES);
@@ -799,6 +800,98 @@ static void *controller(void *arg)
           "no interrupt nested below the tick handler on the interrupt stack");
     check(used_after < size, "the interrupt stack overflowed");
     check(spin_used < 256u, "the nested interrupt landed on the thread's stack");
+    finish();
+    return NULL;
+}
+/* ------------------------------------------------------------------ */
+#elif KTEST_MODE == KTEST_TIMING
+/* The B-scheduler thread's timing records on the board's fine counter.
+ * Four processes of known, different work (busy loops): 0 and 1 the same
+ * short loop, 2 twenty times as long, 3 five times; a cycle every 4 ticks,
+ * a spinner below. The worst execution times must order and scale as the
+ * work does (bounds below: the call and a counter read add a constant to
+ * each, which pulls the ratios down; a tick interrupt inside a short one
+ * pulls them down further), and every release's jitter must stay under a
+ * quarter tick. The board's stated rate is checked against the tick. */
+#define TIMING_CYCLES 64u
+#define TIMING_PERIOD 4u
+#define TIMING_SHORT  50u    /* loop rounds of processes 0 and 1 */
+static struct bsched bs;
+static struct k_bsched kb;
+static volatile uint32_t work_done;
+static volatile int stop_spinning;
+static const uint32_t work_of[4] = {TIMING_SHORT, TIMING_SHORT, 20u * TIMING_SHORT, 5u * TIMING_SHORT};
+
+static void busy(uint32_t rounds)
+{
+    volatile uint32_t i;
+    for (i = 0; i < rounds; i++)
+        work_done++;
+}
+
+static void process(void *context, uint16_t index)
+{
+    (void)context;
+    busy(work_of[index]);
+}
+
+static void *spinner(void *arg)
+{
+    (void)arg;
+    while (!stop_spinning) {
+    }
+    return NULL;
+}
+
+static void *controller(void *arg)
+{
+    static const uint8_t pv[] = {0, 0, 1, 2};
+    uint32_t worst[4], runs[4], jmin = 0, jmax = 0, jmean = 0, samples = 0;
+    uint32_t hz = k_timestamp_hz(), per_tick = hz / K_TICK_HZ, t0, slept;
+    uint16_t i;
+    (void)arg;
+    /* the counter's rate against the tick: 100 ticks of sleep */
+    k_sleep_ticks(1);
+    t0 = k_timestamp();
+    k_sleep_ticks(100);
+    slept = k_timestamp() - t0;
+    k_thread_create(&t_a, "spinner", spinner, NULL, stack_a, 512u, K_PRIO_APP_MIN);
+    bsched_init(&bs, pv, 4);
+    kb.stop_after = TIMING_CYCLES;
+    kb.measure = 1;
+    k_bsched_start(&kb, &bs, process, NULL, TIMING_PERIOD, stack_b, STACK_BYTES);
+    k_thread_join(&kb.thread, NULL, K_FOREVER);
+    stop_spinning = 1;
+    k_thread_join(&t_a, NULL, K_FOREVER);
+    for (i = 0; i < 4u; i++)
+        check(k_bsched_wcet(&kb, i, &worst[i], &runs[i]) == K_OK, "k_bsched_wcet refused a process of the set");
+    check(k_bsched_wcet(&kb, 4, NULL, NULL) == K_EINVAL, "k_bsched_wcet took an index outside the set");
+    (void)k_bsched_jitter(&kb, &jmin, &jmax, &jmean, &samples);
+    k_printf("KTEST hz=%lu tick_hz=%lu slept_100_ticks=%lu\n", (unsigned long)hz,
+             (unsigned long)K_TICK_HZ, (unsigned long)slept);
+    k_printf("KTEST worst0=%lu worst1=%lu worst2=%lu worst3=%lu runs0=%lu runs1=%lu runs2=%lu runs3=%lu\n",
+             (unsigned long)worst[0], (unsigned long)worst[1], (unsigned long)worst[2],
+             (unsigned long)worst[3], (unsigned long)runs[0], (unsigned long)runs[1],
+             (unsigned long)runs[2], (unsigned long)runs[3]);
+    k_printf("KTEST jitter_min=%lu jitter_max=%lu jitter_mean=%lu jitter_samples=%lu cycles=%lu overruns=%lu\n",
+             (unsigned long)jmin, (unsigned long)jmax, (unsigned long)jmean,
+             (unsigned long)samples, (unsigned long)kb.cycles_run, (unsigned long)kb.overruns);
+    check(hz > 32u * K_TICK_HZ, "no fine counter registered (or one coarser than 1/32 tick)");
+    /* both ends are taken just after a tick's wake-up: 100 ticks apart */
+    check(slept + per_tick / 8u >= 100u * per_tick && slept <= 100u * per_tick + per_tick / 8u,
+          "the counter's stated rate disagrees with the tick");
+    check(kb.cycles_run == TIMING_CYCLES && kb.overruns == 0u, "cycle accounting");
+    check(runs[0] == 64u && runs[1] == 64u && runs[2] == 32u && runs[3] == 16u, "runs per process");
+    check(worst[0] > 0u && worst[1] > 0u, "a short process measured 0");
+    check(worst[0] * 2u > worst[1] && worst[1] * 2u > worst[0], "the two equal processes differ by 2x");
+    check(worst[2] > 10u * worst[0] && worst[2] > 10u * worst[1] &&
+          worst[2] <= 21u * worst[0] && worst[2] <= 21u * worst[1],
+          "the 20x process is not 10..21 times the short ones");
+    check(worst[3] * 2u > 5u * worst[0] && worst[3] <= 6u * worst[0] && worst[2] > 3u * worst[3],
+          "the 5x process is not 2.5..6 times the short one, or not below the 20x one");
+    check(samples == TIMING_CYCLES, "not one jitter sample per cycle");
+    check(jmin > 0u && jmin <= jmean && jmean <= jmax && jmax < per_tick / 4u,
+          "release jitter zero, out of order or not under a quarter tick");
     finish();
     return NULL;
 }

@@ -30,6 +30,9 @@ IMAGES = Path(os.environ.get("K_TARGET_DIR", ROOT / "build" / "kernel" / "target
 CROSS = os.environ.get("CROSS_PREFIX", "m68k-linux-gnu-")
 MACHINE = kmeasure.BOARD["machine"]
 TIME_LIMIT = 60.0  # wall seconds per image
+# The fine counter each board registers (k_timestamp_register): the RoboCube's
+# TCR1 at fsys/16, the STM32F405's processor clock through SysTick.
+TIMESTAMP_HZ = {"robocube": 1_048_576, "netduinoplus2": 168_000_000}
 
 
 def run_image(mode, limit, extra=()):
@@ -229,3 +232,33 @@ def test_measure_instruction_counts():
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(kmeasure.summary("tick interrupt with a context switch", tick) + "\n" +
                    kmeasure.summary("semaphore hand-off between two threads", handoff) + "\n")
+
+
+def test_bsched_records_execution_times_and_jitter():
+    """The B-scheduler thread's records on the board's fine counter: four
+    processes of known work (short, short, 20x, 5x busy loops) must measure in
+    that order and scale, within the bounds the image states; release jitter
+    must be positive and under a quarter tick for every cycle. The figures go
+    to build/.../timing.txt for MEASUREMENTS.md."""
+    text = boot("timing")
+    f = facts(text)
+    passed(text)
+    hz, per_tick = f["hz"], f["hz"] // f["tick_hz"]
+    assert hz == TIMESTAMP_HZ[MACHINE], f  # the board's counter, not the tick fallback
+    assert abs(f["slept_100_ticks"] - 100 * per_tick) <= per_tick // 8, f
+    assert (f["runs0"], f["runs1"], f["runs2"], f["runs3"]) == (64, 64, 32, 16)
+    short = max(f["worst0"], f["worst1"])
+    assert 0 < min(f["worst0"], f["worst1"]) and short < 2 * min(f["worst0"], f["worst1"]), f
+    assert 10 * short < f["worst2"] <= 21 * min(f["worst0"], f["worst1"]), f
+    assert 2.5 * f["worst0"] < f["worst3"] <= 6 * f["worst0"] and f["worst2"] > 3 * f["worst3"], f
+    assert f["jitter_samples"] == f["cycles"] == 64 and f["overruns"] == 0
+    assert 0 < f["jitter_min"] <= f["jitter_mean"] <= f["jitter_max"] < per_tick // 4, f
+    us = lambda counts: counts * 1e6 / hz  # noqa: E731
+    out = IMAGES.parent / "timing.txt"
+    out.write_text(
+        f"counter {hz} Hz ({1e9 / hz:.3f} ns a count), tick {f['tick_hz']} Hz\n"
+        + "".join(f"process {i} (work {w}): worst {f[f'worst{i}']} counts = {us(f[f'worst{i}']):.2f} us"
+                  f" over {f[f'runs{i}']} runs\n" for i, w in enumerate(("1x", "1x", "20x", "5x")))
+        + f"release jitter over {f['jitter_samples']} cycles: min {f['jitter_min']} "
+          f"({us(f['jitter_min']):.2f} us), mean {f['jitter_mean']} ({us(f['jitter_mean']):.2f} us), "
+          f"max {f['jitter_max']} ({us(f['jitter_max']):.2f} us)\n")
