@@ -11,7 +11,7 @@
  *   binary io    bio     0..15    pin level 0/1             latch 0/1 (1 = input)
  *   binary in    bin     1..5     DUART IPn level 0/1       -
  *   fast out     fast    0..15    the bit's shadow 0/1      0/1
- *   pwm          pwm     0..14    duty, per-mille           duty 0..1000 (frequency kept)
+ *   pwm          pwm     0..15    duty, per-mille           duty 0..1000 (frequency kept)
  *   motor        motor   0..2     power, signed per-mille   power -1000..1000 (open loop)
  *   encoder      enc     0..2     position, counts          -
  *   led          led     0        0/1                       0/1

@@ -113,7 +113,7 @@ int tpu_init(void)
 
 static int tpu_check(unsigned ch)
 {
-    if (ch >= TPU_USER_CHANNELS)
+    if (ch >= TPU_CHANNELS || (board_tpu_reserved & (1u << ch)) != 0u)
         return DRV_ERR_CHANNEL;
     if (!tpu_ready)
         return DRV_ERR_STATE;
@@ -340,7 +340,8 @@ int tpu_qdec_start(unsigned primary_ch, unsigned secondary_ch)
     int r = tpu_check(primary_ch);
     if (r < 0)
         return r;
-    if (secondary_ch >= TPU_USER_CHANNELS || secondary_ch == primary_ch)
+    if (secondary_ch >= TPU_CHANNELS || (board_tpu_reserved & (1u << secondary_ch)) != 0u ||
+        secondary_ch == primary_ch)
         return DRV_ERR_CHANNEL;
     irq = k_arch_irq_save();
     tpu_leave_mode(primary_ch);

@@ -5,20 +5,21 @@
  * QDEC (quadrature decoding on a channel pair, extended to 32 bits), plus
  * per-channel interrupts routed through the kernel (k_irq_register).
  *
- * Channels are the TPU channel numbers TP0..TP14. The RoboCube brings all
- * 16 out: TP0-TP5 on the motor header H3 (the motor driver uses TP0-TP5 and
- * the encoder B phases TP12-TP14, see drivers/motor.h), TP6-TP15 on the timer
- * header H11 (the "10 timer channels"); TP15 is the board support's, which
- * reads TCR1 through it for the kernel's fine time stamp (k_timestamp), so
- * the driver refuses it (DRV_ERR_CHANNEL). Setting a function on a channel
- * replaces whatever ran there before.
+ * Channels are the TPU channel numbers TP0..TP15. The RoboCube brings all
+ * of them out: TP0-TP5 on the motor header H3 (the motor driver uses TP0-TP5
+ * and the encoder B phases TP12-TP14, see drivers/motor.h), TP6-TP15 on the
+ * timer header H11 (the "10 timer channels"). A channel the board support
+ * holds (board_tpu_reserved: TP15 once the kernel's fine time stamp runs,
+ * k_timestamp_start) is refused with DRV_ERR_CHANNEL. Setting a function on
+ * a channel replaces whatever ran there before.
  *
  * Timebase: tpu_init sets TPUMCR = 0x4ACD as CubeOS did: TCR1 = fsys/16 =
  * 1.048576 MHz (TPU_TCR1_HZ). Interrupts: TICR = 0x0480, level 4, vectors
  * 0x80 + channel.
  *
  * Every function returns >= 0 on success, DRV_ERR_CHANNEL for a channel
- * above 14 (or a QDEC pair that is not two distinct channels),
+ * above 15 or held by the board (or a QDEC pair that is not two distinct
+ * channels),
  * DRV_ERR_RANGE for a value out of range, DRV_ERR_STATE before tpu_init or
  * when the channel does not run the function asked about. No call blocks.
  */
@@ -27,11 +28,7 @@
 
 #include <stdint.h>
 
-#include "boards/robocube/tpu_stamp.h"
-
 #define TPU_CHANNELS      16u
-/* The channels this driver serves: TP0 .. TPU_USER_CHANNELS - 1. */
-#define TPU_USER_CHANNELS ROBOCUBE_TPU_STAMP_CHANNEL
 #define TPU_TCR1_HZ       1048576u   /* fsys / 16 at 16.777216 MHz */
 #define TPU_IRQ_LEVEL     4u
 #define TPU_VECTOR_BASE   0x80u      /* channel n interrupts with vector 0x80 + n */

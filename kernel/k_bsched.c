@@ -14,22 +14,30 @@ static struct k_bsched *k_bsched_watched;
 static void k_bsched_watchdog(k_ticks_t now)
 {
     struct k_bsched *b = k_bsched_watched;
-    if (b == NULL)
-        return;
-    if (b->measure && !b->in_cycle && now == b->next_release) {
-        /* The release of the cycle the thread sleeps for: k_tick's stamp of it. */
-        b->release_stamp = k_tick_stamp;
-        b->release_stamp_tick = now;
-        b->release_stamped = 1;
-        return;
-    }
-    if (!b->in_cycle || now != b->watch)
+    if (b == NULL || !b->in_cycle || now != b->watch)
         return;
     b->stuck_cycle = b->cycles_run;
     b->stuck_tick = now;
     b->stuck_reports++;
     (void)k_thread_setprio(&b->reporter, K_BSCHED_ANNOUNCE_PRIO);
     (void)k_sem_post(&b->report_sem);
+}
+
+/* The tick hook of an instance that measures: the release of the cycle
+ * the thread sleeps for is stamped at the end of its tick (the tick's own
+ * work, a few dozen instructions, is not in the jitter), then the watchdog.
+ * A hook of its own, so that an instance that measures nothing runs no
+ * more instructions a tick than the watchdog's. */
+static void k_bsched_watchdog_stamping(k_ticks_t now)
+{
+    struct k_bsched *b = k_bsched_watched;
+    if (b != NULL && !b->in_cycle && now == b->next_release) {
+        b->release_stamp = k_timestamp();
+        b->release_stamp_tick = now;
+        b->release_stamped = 1;
+        return;
+    }
+    k_bsched_watchdog(now);
 }
 
 /* Prints what happened since the last burst: the last "still running"
@@ -108,11 +116,13 @@ static void k_bsched_invoke(void *context, uint16_t index)
     struct k_bsched *b = context;
     uint32_t begin = k_timestamp();
     uint32_t took;
-    if (b->first_pending) {
-        b->first_pending = 0;
+    if (b->release_stamped) {
+        /* The first process of the cycle: the thread's cycle runs for
+         * next_release (it moves on after the cycle). */
+        b->release_stamped = 0;
         /* Only a stamp of this cycle's own release tick counts (the hook
          * stamps the watched instance only). */
-        if (b->release_stamped && b->release_stamp_tick == b->release)
+        if (b->release_stamp_tick == b->next_release)
             k_bsched_jitter_sample(b, begin - b->release_stamp);
     }
     b->run(b->context, index);
@@ -138,12 +148,9 @@ static void *k_bsched_main(void *arg)
         int32_t ran;
         (void)k_sleep_until(b->next_release);
         start = k_ticks();
-        b->release = b->next_release;
-        b->first_pending = 1;
         b->watch = b->next_release + b->period;
         b->in_cycle = 1;
-        ran = b->measure ? bsched_run_cycle(b->sched, k_bsched_invoke, b)
-                         : bsched_run_cycle(b->sched, b->run, b->context);
+        ran = bsched_run_cycle(b->sched, b->cycle_run, b->cycle_context);
         b->in_cycle = 0;
         end = k_ticks();
         if (ran < 0) {
@@ -169,7 +176,6 @@ static void *k_bsched_main(void *arg)
     }
     if (k_bsched_watched == b) {
         k_tick_hook = NULL;
-        k_tick_stamping = 0;
         k_bsched_watched = NULL;
     }
     b->finished = 1;
@@ -212,11 +218,13 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
     b->jitter_samples = 0;
     b->jitter_sum_lo = 0;
     b->jitter_sum_hi = 0;
-    b->release = 0;
-    b->first_pending = 0;
+    b->cycle_run = b->measure ? k_bsched_invoke : run;
+    b->cycle_context = b->measure ? (void *)b : context;
     b->release_stamp = 0;
     b->release_stamp_tick = 0;
     b->release_stamped = 0;
+    if (b->measure)
+        (void)k_timestamp_start(); /* whole ticks if the board's counter cannot start */
     r = k_sem_init(&b->report_sem, 0, 1);
     if (r == K_OK)
         r = k_sem_init(&b->finish_sem, 0, 1);
@@ -228,8 +236,7 @@ int k_bsched_start(struct k_bsched *b, struct bsched *s, bsched_process_fn run, 
                             K_PRIO_APP_MAX);
     if (r == K_OK && k_tick_hook == NULL) {
         k_bsched_watched = b;
-        k_tick_hook = k_bsched_watchdog;
-        k_tick_stamping = b->measure ? 1u : 0u;
+        k_tick_hook = b->measure ? k_bsched_watchdog_stamping : k_bsched_watchdog;
     }
     return r;
 }

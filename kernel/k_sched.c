@@ -12,11 +12,16 @@
 struct k_kernel k_kernel;
 struct k_stats k_stats;
 void (*volatile k_tick_hook)(k_ticks_t now);
-volatile uint32_t k_tick_stamp;
-volatile uint8_t k_tick_stamping;
-/* The registered fine counter (k_timestamp_register); none after k_init. */
-static k_timestamp_fn k_timestamp_read;
+/* The registered fine counter (k_timestamp_register; none after k_init),
+ * what starts it, and k_timestamp_start's result once it has run
+ * (K_TIMESTAMP_UNSTARTED before). k_timestamp reads k_timestamp_read only
+ * once it has started. */
+#define K_TIMESTAMP_UNSTARTED 1
+static k_timestamp_fn k_timestamp_registered;
+static k_timestamp_start_fn k_timestamp_starter;
 static uint32_t k_timestamp_rate;
+static k_timestamp_fn k_timestamp_read;
+static int k_timestamp_started = K_TIMESTAMP_UNSTARTED;
 
 K_STACK_DEFINE(k_idle_stack, K_IDLE_STACK_BYTES);
 
@@ -521,8 +526,6 @@ void k_tick(void)
     k_ticks_t now = k_kernel.ticks + 1u;
 
     k_kernel.ticks = now;
-    if (k_tick_stamping != 0u)
-        k_tick_stamp = k_timestamp();
     k_stats.ticks_isr++;
     if (++k_kernel.subticks == K_TICK_HZ) {
         k_kernel.subticks = 0;
@@ -555,13 +558,33 @@ k_ticks_t k_ticks(void)
     return k_kernel.ticks;
 }
 
-void k_timestamp_register(k_timestamp_fn read, uint32_t hz)
+void k_timestamp_register(k_timestamp_fn read, uint32_t hz, k_timestamp_start_fn start)
 {
     uint32_t s = k_arch_irq_save();
     /* Both or neither: a read without its rate would give counts of no known unit. */
-    k_timestamp_read = hz != 0u ? read : NULL;
+    k_timestamp_registered = hz != 0u ? read : NULL;
     k_timestamp_rate = read != NULL ? hz : 0u;
+    k_timestamp_starter = start;
+    k_timestamp_read = NULL;
+    k_timestamp_started = K_TIMESTAMP_UNSTARTED;
     k_arch_irq_restore(s);
+}
+
+int k_timestamp_start(void)
+{
+    int r;
+    if (k_timestamp_started != K_TIMESTAMP_UNSTARTED)
+        return k_timestamp_started;
+    if (k_timestamp_registered == NULL)
+        r = K_EINVAL;
+    else if (k_timestamp_starter != NULL)
+        r = k_timestamp_starter();
+    else
+        r = K_OK;
+    if (r == K_OK)
+        k_timestamp_read = k_timestamp_registered;
+    k_timestamp_started = r;
+    return r;
 }
 
 uint32_t k_timestamp(void)
@@ -776,10 +799,11 @@ void k_init(void)
     k_memset(&k_kernel, 0, sizeof k_kernel);
     k_memset(&k_stats, 0, sizeof k_stats);
     k_tick_hook = NULL;
-    k_tick_stamping = 0;
-    k_tick_stamp = 0;
-    k_timestamp_read = NULL;
+    k_timestamp_registered = NULL;
+    k_timestamp_starter = NULL;
     k_timestamp_rate = 0;
+    k_timestamp_read = NULL;
+    k_timestamp_started = K_TIMESTAMP_UNSTARTED;
     k_prioq_init(&k_kernel.ready);
     k_tlist_init(&k_kernel.timers);
     k_thread_setup(&k_kernel.idle, "idle", k_idle_main, NULL, k_idle_stack,

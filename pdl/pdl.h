@@ -380,7 +380,7 @@ const char *pdl_strerror(int code);
  *   PDL_ANALOG_OUT 0..5   analog outputs AOUT0-5 (0..255)
  *   PDL_BIO_OUT    0..15  binary I/O lines (0/1)
  *   PDL_FAST_OUT   0..15  fast binary outputs (0/1)
- *   PDL_PWM        0..14  TPU channel PWM duty, permille 0..1000 at the channel's frequency (1 kHz unless set)
+ *   PDL_PWM        0..15  TPU channel PWM duty, permille 0..1000 at the channel's frequency (1 kHz unless set)
  *   PDL_LED        0      the board LED (0 off, else on)
  * A value outside a port's range is clipped to it when written. */
 enum pdl_port {

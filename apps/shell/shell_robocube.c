@@ -283,7 +283,7 @@ static const struct cmd robocube_commands[] = {
     {"bio", "N [V]", "binary I/O line N (0..15): read, or latch V (1 = input)", 1, 2, cmd_port},
     {"bin", "N", "read binary input N (1..5, DUART IP1-IP5)", 1, 1, cmd_port},
     {"fast", "N V", "set fast output bit N (0..15) to V (0/1)", 2, 2, cmd_port},
-    {"pwm", "CH PERMILLE [HZ]", "TPU channel CH (0..14): PWM duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
+    {"pwm", "CH PERMILLE [HZ]", "TPU channel CH (0..15): PWM duty 0..1000, 17..20000 Hz", 2, 3, cmd_pwm},
     {"motor", "N SPEED", "motor N (0..2) power, signed per-mille (-1000..1000)", 2, 2, cmd_motor},
     {"speed", "N CPS", "motor N closed loop: PI speed set-point in counts/s", 2, 2, cmd_speed},
     {"enc", "N", "motor N's encoder: position (counts), speed (counts/s)", 1, 1, cmd_enc},

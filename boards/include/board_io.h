@@ -27,6 +27,10 @@ extern volatile const uint8_t board_binary_in_reg;
  * its parameter RAM (8 words a channel). */
 extern volatile uint16_t board_tpu_regs[];
 extern volatile uint16_t board_tpu_param[];
+/* The TPU channels the board support holds for itself (bit n = TPn), which
+ * the TPU driver refuses: none until the board takes one (the RoboCube's
+ * fine time stamp takes TP15 when it starts, k_timestamp_start). */
+extern volatile uint16_t board_tpu_reserved;
 
 /* The board's output lines (the motors' direction bits, drivers/motor.c;
  * on the RoboCube the DUART's output port): bit n set = line n asserted.

@@ -194,7 +194,12 @@ uint32_t k_board_console_dropped(void)
  * own parameters, so an edge on the TP15 pin, if the microcode served one,
  * would write only there. The 16 bits are extended to 32 here, which holds
  * while a read comes at least once a round: the tick reads every
- * K_BOARD_STAMP_EVERY ticks (1/32 s at most). On a real chip the copy
+ * K_BOARD_STAMP_EVERY ticks (1/32 s at most). All of it starts with the
+ * first k_timestamp_start (k_board_timestamp_start): until then TP15 is the
+ * TPU driver's like any channel and the tick runs not one instruction for
+ * the counter; from then on the driver refuses TP15 (board_tpu_reserved),
+ * and the start fails with K_EBUSY if the driver runs a function there
+ * already. On a real chip the copy
  * waits for the TPU's scheduler (microseconds when other channels are
  * busy): a stamp is TCR1 at that service, not at the write. The emulator
  * serves it at once. */
@@ -204,6 +209,7 @@ uint32_t k_board_console_dropped(void)
 #if K_TICK_HZ < 32
 #error "the TCR1 extension needs a tick of at least 32 Hz (a read every 1/32 s)"
 #endif
+volatile uint16_t board_tpu_reserved; /* board_io.h: TPU channels the TPU driver refuses */
 static uint16_t k_stamp_last;   /* TCR1 at the last read */
 static uint32_t k_stamp_high;   /* the rounds before it, in the upper 16 bits */
 static uint32_t k_stamp_countdown;
@@ -227,9 +233,17 @@ static uint32_t k_board_timestamp(void)
     return stamp;
 }
 
-static void k_board_timestamp_init(void)
+static void k_board_tick(uint32_t ticks);
+static void k_board_tick_stamping(uint32_t ticks);
+
+static int k_board_timestamp_start(void)
 {
     uint32_t irq = k_arch_irq_save();
+    if ((MC68332_TPU_CPR0 & MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u)) != 0u) {
+        k_arch_irq_restore(irq); /* a function of the TPU driver runs on TP15 */
+        return K_EBUSY;
+    }
+    board_tpu_reserved = (uint16_t)(board_tpu_reserved | (1u << K_BOARD_STAMP_CH));
     MC68332_TPUMCR = MC68332_TPUMCR_CUBEOS;
     MC68332_TPU_CPR0 = (uint16_t)(MC68332_TPU_CPR0 & ~MC68332_TPU_FIELD2(K_BOARD_STAMP_CH, 3u));
     MC68332_TPU_CFSR0 = (uint16_t)((MC68332_TPU_CFSR0 & 0x0FFFu) | (MC68332_TPU_FN_QDEC << 12));
@@ -242,8 +256,10 @@ static void k_board_timestamp_init(void)
     k_stamp_last = 0;
     k_stamp_high = 0;
     k_stamp_countdown = K_BOARD_STAMP_EVERY;
-    k_arch_irq_restore(irq);
     (void)k_board_timestamp();
+    pit_set_hook(k_board_tick_stamping);
+    k_arch_irq_restore(irq);
+    return K_OK;
 }
 
 /* PIT hook: runs inside the kernel's interrupt entry (k_board_pit_isr). */
@@ -251,14 +267,20 @@ static void k_board_tick(uint32_t ticks)
 {
     void (*cb)(void);
     (void)ticks;
-    if (--k_stamp_countdown == 0u) {
-        k_stamp_countdown = K_BOARD_STAMP_EVERY;
-        (void)k_board_timestamp(); /* keeps the extension of TCR1 to 32 bits */
-    }
     k_tick();
     cb = k_board_tick_callback;
     if (cb != NULL)
         cb();
+}
+
+/* The PIT hook once the fine time stamp runs: the extension's read, then the tick. */
+static void k_board_tick_stamping(uint32_t ticks)
+{
+    if (--k_stamp_countdown == 0u) {
+        k_stamp_countdown = K_BOARD_STAMP_EVERY;
+        (void)k_board_timestamp(); /* keeps the extension of TCR1 to 32 bits */
+    }
+    k_board_tick(ticks);
 }
 
 /* The tick goes through the kernel's interrupt entry like every other
@@ -289,7 +311,6 @@ int k_board_init(void)
         k_irq_register(VECTOR_PIT, IRQ_LEVEL_PIT, k_board_pit_isr, NULL) != K_OK)
         return -1;
     k_console_register(k_board_console_write, k_board_console_write_sync);
-    k_board_timestamp_init();
-    k_timestamp_register(k_board_timestamp, ROBOCUBE_TCR1_HZ);
+    k_timestamp_register(k_board_timestamp, ROBOCUBE_TCR1_HZ, k_board_timestamp_start);
     return pit_start(K_TICK_HZ, k_board_tick);
 }

@@ -61,6 +61,13 @@ int pit_start(uint32_t rate_hz, pit_tick_hook_fn hook)
     return 0;
 }
 
+void pit_set_hook(pit_tick_hook_fn hook)
+{
+    uint16_t sr = cpu32_irq_save();
+    tick_hook = hook;
+    cpu32_irq_restore(sr);
+}
+
 void pit_stop(void)
 {
     SIM_PITR = 0;

@@ -29,6 +29,9 @@ int pit_start(uint32_t rate_hz, pit_tick_hook_fn hook);
  * interrupt entry other than the driver's own vector. */
 void pit_interrupt(void);
 
+/* Replaces the hook pit_start installed (the next tick calls the new one). */
+void pit_set_hook(pit_tick_hook_fn hook);
+
 /* Stops the PIT (PITR = 0); the tick count keeps its value. */
 void pit_stop(void);
 

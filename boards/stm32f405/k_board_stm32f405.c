@@ -185,6 +185,6 @@ int k_board_init(void)
     /* The kernel's fine time stamp: processor clocks, from SysTick. Not
      * the DWT's cycle counter: QEMU 7.2 has no DWT (its registers read as
      * 0); SysTick's count it models, in virtual time. */
-    k_timestamp_register(armv7m_systick_cycles, STM32F405_CPU_HZ);
+    k_timestamp_register(armv7m_systick_cycles, STM32F405_CPU_HZ, NULL);
     return 0;
 }

@@ -24,7 +24,8 @@
  * Timing, when asked for (b->measure set before k_bsched_start), in counts
  * of the kernel's fine time stamp (k_timestamp, at k_timestamp_hz() counts
  * per second: the board's counter, or whole ticks when the board registered
- * none). It costs two counter reads per process and one per cycle (k_tick's
+ * none; k_bsched_start starts the board's counter, k_timestamp_start). It
+ * costs two counter reads per process and one per cycle (the tick hook's
  * stamp of the release), with their bookkeeping: on the RoboCube, whose
  * counter is read through the TPU, the PDL benchmark (one process a cycle,
  * a cycle every 1024 Hz tick) measured 4.9 % more CPU with it (load 49.2 %
@@ -37,13 +38,14 @@
  *    meanwhile are in it, and so are the call and one counter read (the
  *    floor an empty process function measures).
  *  - release jitter (k_bsched_jitter): for each minor cycle that runs a
- *    process, the time from its release (the stamp k_tick took when it
- *    counted the release's tick, before waking the thread) to the start of
+ *    process, the time from its release (the stamp the tick hook took at
+ *    the end of the release's tick, before the thread ran) to the start of
  *    its first process: the wake-up, the switch, bsched's step and any
  *    lateness. Smallest, largest, mean and the number of cycles measured.
  *    Only the instance the tick watches (the first one started) measures
  *    it; cycles that run no process give no sample. The path from the timer
- *    event to k_tick (interrupt entry) is not in it.
+ *    event to the end of the tick's work (interrupt entry, k_tick) is not
+ *    in it.
  */
 #ifndef K_BSCHED_H
 #define K_BSCHED_H
@@ -91,11 +93,11 @@ struct k_bsched {
     uint32_t jitter_min, jitter_max; /* release to first process */
     uint32_t jitter_samples;
     uint32_t jitter_sum_lo, jitter_sum_hi; /* 64-bit sum, for the mean */
-    k_ticks_t release;               /* tick the running cycle was released at */
-    int first_pending;               /* its first process has not started yet */
-    volatile uint32_t release_stamp;      /* k_tick_stamp at the tick of next_release */
+    bsched_process_fn cycle_run;     /* what each cycle calls: run, or run between stamps */
+    void *cycle_context;
+    volatile uint32_t release_stamp;      /* the tick hook's stamp at the tick of next_release */
     volatile k_ticks_t release_stamp_tick; /* which tick release_stamp is of */
-    volatile int release_stamped;         /* release_stamp holds a stamp */
+    volatile int release_stamped;         /* release_stamp holds a stamp no process took yet */
     struct k_thread reporter;
     uint32_t reporter_stack[K_STACK_WORDS(K_BSCHED_REPORTER_STACK_BYTES)] __attribute__((aligned(4)));
 };

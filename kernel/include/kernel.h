@@ -63,11 +63,23 @@ uint32_t k_uptime_ms(void);
  * which must run through all 32 bits (a board whose counter is narrower
  * extends it) and may be called in any context, interrupts masked or not;
  * hz is its rate. Differences of two stamps are valid up to 2^32 counts.
- * Until a board registers one (k_init forgets it), or when read is NULL or
- * hz 0, k_timestamp is k_ticks() and k_timestamp_hz K_TICK_HZ: what is
- * measured with it comes in whole ticks. */
+ * start (may be NULL: nothing to start) is called once, by the first
+ * k_timestamp_start: a board whose counter needs hardware of its own takes
+ * it only then, so an image that measures nothing loses nothing to it (the
+ * RoboCube's takes TPU channel 15, and its tick does the extension's reads
+ * only from then on); it returns K_OK, or an error (K_EBUSY: the hardware
+ * is in use) and the counter stays off.
+ * Until a counter is registered (k_init forgets it) and started, or when
+ * read is NULL or hz 0, k_timestamp is k_ticks() and k_timestamp_hz
+ * K_TICK_HZ: what is measured with it comes in whole ticks. */
 typedef uint32_t (*k_timestamp_fn)(void);
-void k_timestamp_register(k_timestamp_fn read, uint32_t hz);
+typedef int (*k_timestamp_start_fn)(void);
+void k_timestamp_register(k_timestamp_fn read, uint32_t hz, k_timestamp_start_fn start);
+/* Starts the registered counter; later calls return the first call's
+ * result. K_OK: k_timestamp counts it from now on. K_EINVAL (none
+ * registered) or the board's error: k_timestamp stays k_ticks(). Threads
+ * only (the board's start may take a while). */
+int k_timestamp_start(void);
 /* The counter now, in counts of k_timestamp_hz(). */
 uint32_t k_timestamp(void);
 uint32_t k_timestamp_hz(void);
@@ -311,11 +323,6 @@ void k_tick(void);
  * interrupt mask back at the tick's level (the B-scheduler thread's
  * watchdog uses it). NULL when unused. */
 extern void (*volatile k_tick_hook)(k_ticks_t now);
-/* While k_tick_stamping is nonzero, k_tick stores k_timestamp() in
- * k_tick_stamp as it counts each tick, before it wakes anyone: the
- * B-scheduler thread measures its release jitter from there. */
-extern volatile uint32_t k_tick_stamp;
-extern volatile uint8_t k_tick_stamping;
 
 /* ---- start-up ---- */
 /* Resets the kernel (no thread runs yet). */

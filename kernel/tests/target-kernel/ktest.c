@@ -847,9 +847,13 @@ static void *controller(void *arg)
 {
     static const uint8_t pv[] = {0, 0, 1, 2};
     uint32_t worst[4], runs[4], jmin = 0, jmax = 0, jmean = 0, samples = 0;
-    uint32_t hz = k_timestamp_hz(), per_tick = hz / K_TICK_HZ, t0, slept;
+    uint32_t hz, per_tick, t0, slept;
     uint16_t i;
     (void)arg;
+    check(k_timestamp_hz() == K_TICK_HZ, "the fine counter ran before anyone started it");
+    check(k_timestamp_start() == K_OK, "the board's fine counter did not start");
+    hz = k_timestamp_hz();
+    per_tick = hz / K_TICK_HZ;
     /* the counter's rate against the tick: 100 ticks of sleep */
     k_sleep_ticks(1);
     t0 = k_timestamp();
