@@ -30,7 +30,9 @@
  * counter is read through the TPU, the PDL benchmark (one process a cycle,
  * a cycle every 1024 Hz tick) measured 4.9 % more CPU with it (load 49.2 %
  * -> 54.1 %, about 190 instructions a cycle), above that benchmark's 50 %
- * bound: so it is off unless asked for. It records
+ * bound: so it is off unless asked for, and off it costs nothing a tick or
+ * a cycle (the stamping tick hook and the timed call are chosen at start).
+ * It records
  *  - per process of the planned set, the longest execution of one call of
  *    the process function and how many calls were measured
  *    (k_bsched_wcet). It is the time from the call to its return as the
