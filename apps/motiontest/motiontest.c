@@ -23,6 +23,7 @@
  *   odoget                 odometry_update from the motor positions -> ok X Y HEADING
  *   cpuload MS             -> ok TURNS of a lowest-priority busy loop during MS ms
  *   time                   -> ok UPTIME_MS
+ *   stamp                  k_timestamp_start -> ok HZ (the fine counter's rate) or err CODE
  */
 #include <stdint.h>
 
@@ -405,6 +406,15 @@ static void m_time(NUMBERS_ONLY)
     k_printf("ok %lu\n", (unsigned long)k_uptime_ms());
 }
 
+static void m_stamp(NUMBERS_ONLY)
+{
+    int r = k_timestamp_start();
+    if (r < 0)
+        k_printf("err %d\n", r);
+    else
+        k_printf("ok %lu\n", (unsigned long)k_timestamp_hz());
+}
+
 /* Every command takes exactly min_args numbers; anything else is err DRV_ERR_PARAM. */
 static const struct cmd commands[] = {
     {"pwm", "", "", 3, 3, m_pwm},
@@ -435,6 +445,7 @@ static const struct cmd commands[] = {
     {"odoget", "", "", 0, 0, m_odoget},
     {"cpuload", "", "", 1, 1, m_cpuload},
     {"time", "", "", 0, 0, m_time},
+    {"stamp", "", "", 0, 0, m_stamp},
 };
 
 static void run_command(char *line)
