@@ -1,6 +1,7 @@
 # The POSIX layer (posix/) on the board: apps/posixcheck runs each profile area
 # and its error paths, judged by apps/posixcheck/tests/; apps/posixmeasure
 # counts the instructions of the POSIX calls against the k_ calls they stand on.
+posixcheck_NEEDS := console tick libc posix
 CHECKS += posix
 EMU_CHECKS += posix
 .PHONY: check-posix

@@ -86,25 +86,3 @@ void board_console_rx_resume(void)
 {
     stm32f405_console_rx_resume();
 }
-
-/* picolibc's stdio (printf, puts) writes through the kernel console, as
- * newlib's does on the RoboCube (drivers/libc_syscalls.c). */
-#include <stdio.h>
-#include <stdlib.h>
-
-static int board_stdio_putc(char c, FILE *f)
-{
-    (void)f;
-    return k_console_write(&c, 1u) == 1u ? (unsigned char)c : EOF;
-}
-static FILE board_stdio = FDEV_SETUP_STREAM(board_stdio_putc, NULL, NULL, _FDEV_SETUP_WRITE);
-FILE *const stdout = &board_stdio;
-FILE *const stderr = &board_stdio;
-FILE *const stdin = NULL;
-
-/* exit() and abort() end here: the board halts, as on the RoboCube. */
-void _exit(int status)
-{
-    k_printf("exit(%d): halted\n", status);
-    board_halt("main", "exit called\n");
-}
