@@ -32,5 +32,5 @@ BOARD_stm32f405_CONSOLE := USART1
 # program advance in a fixed ratio and runs repeat exactly.
 BOARD_stm32f405_ICOUNT  := shift=3,sleep=off
 # Its ports are ADC, PWM and the LED, the rest simulated in RAM (README.md).
-BOARD_stm32f405_CAPS    := console tick led ports libc
+BOARD_stm32f405_CAPS    := console tick led ports libc posix
 BOARD_stm32f405_BUILD   := $(BUILD)/stm32f405
