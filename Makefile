@@ -89,6 +89,7 @@ include kernel/arch/cpu32/port.mk
 include kernel/arch/armv7m/port.mk
 include boards/robocube/board.mk
 include boards/stm32f405/board.mk
+include boards/mps2-an385/board.mk
 include mk/image.mk
 include kernel/kernel.mk
 include drivers/drivers.mk
@@ -106,6 +107,7 @@ include apps/apps.mk
 include bench/bench.mk
 # The boards' own suites (the firmware on each beside the RoboCube).
 include boards/stm32f405/tests/tests.mk
+include boards/mps2-an385/tests/tests.mk
 
 .PHONY: all check setup run clean check-stress
 all: $(ALL)
