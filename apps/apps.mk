@@ -57,7 +57,7 @@ $(1)_TICK_HZ ?= 1024
 $(1)_SRCS    ?= $$(wildcard apps/$(1)/*.c)
 $(1)_BOOT    ?= board
 $(1)_NEEDS   ?= console tick libc ports
-$(1)_BOARDS  ?= $$(BOARDS)
+$(1)_BOARDS  ?= $$(IMAGE_BOARDS)
 endef
 $(foreach a,$(APPS),$(eval $(call app_defaults,$(a))))
 # The image of app NAME on BOARD, and on the RoboCube.
@@ -71,7 +71,7 @@ app_refusal = $(strip $(if $(filter $(1),$($(2)_BOARDS)),\
     APP=$(2) is for BOARD=$(subst $(space),|,$($(2)_BOARDS)) only))
 app_icount = $(or $($(2)_ICOUNT_$(1)),$(BOARD_$(1)_ICOUNT))
 
-$(foreach b,$(BOARDS),$(foreach a,$(APPS),$(if $(call app_refusal,$(b),$(a)),,\
+$(foreach b,$(IMAGE_BOARDS),$(foreach a,$(APPS),$(if $(call app_refusal,$(b),$(a)),,\
     $(eval $(call image,$(b),$(a),$(BOARD_$(b)_BUILD)/$(a),$(call image_elf,$(b),$(a)),$(call app_srcs,$(b),$(a)),\
         -DK_TICK_HZ=$($(a)_TICK_HZ) $(APP_LIB_CFLAGS) $($(a)_CFLAGS),app)))))
 
@@ -94,28 +94,28 @@ $(foreach a,$(APPS),$(eval $(call app_host_template,$(a))))
 host-lib: $(call app_host_lib,$(APP))
 # The board an image is built for and runs on (boards/NAME/, mk/image.mk).
 BOARD  ?= robocube
-BOARD_GOALS := run firmware $(foreach b,$(BOARDS),run-$(b) firmware-$(b))
+BOARD_GOALS := run firmware $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b))
 ifneq ($(filter $(BOARD_GOALS),$(MAKECMDGOALS)),)
 ifneq ($(words $(BOARD)),1)
-$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(IMAGE_BOARDS))] [APP=NAME]))
 endif
-ifeq ($(filter $(BOARD),$(BOARDS)),)
-$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+ifeq ($(filter $(BOARD),$(IMAGE_BOARDS)),)
+$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(IMAGE_BOARDS))] [APP=NAME]))
 endif
 ifeq ($(filter $(APP),$(APPS)),)
 $(error APP=$(APP): no such image (have: $(APPS)))
 endif
 # An image that needs what the board lacks stops here, in one line.
-$(foreach b,$(or $(patsubst run-%,%,$(patsubst firmware-%,%,$(filter $(foreach b,$(BOARDS),run-$(b) firmware-$(b)),$(MAKECMDGOALS)))),$(BOARD)),\
+$(foreach b,$(or $(patsubst run-%,%,$(patsubst firmware-%,%,$(filter $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b)),$(MAKECMDGOALS)))),$(BOARD)),\
     $(if $(call app_refusal,$(b),$(APP)),$(error $(call app_refusal,$(b),$(APP)))))
 endif
 
 FW_ELF := $(call app_elf,$(APP))
 
-.PHONY: firmware firmware-all run $(foreach b,$(BOARDS),run-$(b) firmware-$(b))
+.PHONY: firmware firmware-all run $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b))
 firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
 firmware: firmware-$(BOARD)
-$(foreach b,$(BOARDS),$(eval firmware-$(b): $(call image_elf,$(b),$(APP))))
+$(foreach b,$(IMAGE_BOARDS),$(eval firmware-$(b): $(call image_elf,$(b),$(APP))))
 
 # make run on a board without the RoboCube's world: the image on its QEMU
 # machine, console on stdio. Piped input waits for the board's first output
@@ -131,7 +131,7 @@ run-$(1):
 	    -icount $$(call app_icount,$(1),$$(APP)) -kernel $$(call image_elf,$(1),$$(APP)) $$(QEMU_CONSOLE_ARGS) $(BOARD_$(1)_QEMU_ARGS) \
 	    $$($$(APP)_RUN_ARGS); rc=$$$$?; [ $$$$rc -eq 0 ] || [ "$$(RUN_SECONDS)" != "" -a $$$$rc -eq 124 ]
 endef
-$(foreach b,$(filter-out robocube,$(BOARDS)),$(eval $(call run_board,$(b))))
+$(foreach b,$(filter-out robocube,$(IMAGE_BOARDS)),$(eval $(call run_board,$(b))))
 
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from

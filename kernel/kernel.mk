@@ -48,7 +48,7 @@ K_TEST_MODES := preempt priority semaphore inherit queue drift overrun stackguar
 k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10 11 12 13,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
 k_test_dir    = $(if $(filter robocube,$(1)),$(K_BUILD)/target,$(BOARD_$(1)_BUILD)/kernel)
 k_test_elfs   = $(patsubst %,$(call k_test_dir,$(1))/ktest-%.elf,$(K_TEST_MODES))
-$(foreach b,$(BOARDS),$(foreach m,$(K_TEST_MODES),$(eval $(call image,$(b),ktest-$(m),$(call k_test_dir,$(b))/$(m),\
+$(foreach b,$(IMAGE_BOARDS),$(foreach m,$(K_TEST_MODES),$(eval $(call image,$(b),ktest-$(m),$(call k_test_dir,$(b))/$(m),\
     $(call k_test_dir,$(b))/ktest-$(m).elf,kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)),kernel,\
     $(call k_test_dir,$(b))))))
 K_TEST_ELFS  := $(call k_test_elfs,robocube)
@@ -66,9 +66,9 @@ $(foreach k,$(FW_FAULT_KINDS),$(eval $(call image,robocube,fault-$(k),$(FW_BUILD
 CHECKS += kernel-target
 EMU_CHECKS += kernel-target
 
-.PHONY: kernel-target check-kernel-target kernel-size $(foreach b,$(BOARDS),$(b)-kernel-target)
+.PHONY: kernel-target check-kernel-target kernel-size $(foreach b,$(IMAGE_BOARDS),$(b)-kernel-target)
 kernel-target: $(K_TEST_ELFS)
-$(foreach b,$(BOARDS),$(eval $(b)-kernel-target: $(call k_test_elfs,$(b))))
+$(foreach b,$(IMAGE_BOARDS),$(eval $(b)-kernel-target: $(call k_test_elfs,$(b))))
 
 # The same suite on every other board (check-NAME-kernel): the same images and
 # judgements; K_BOARD picks the board's machine and -icount
@@ -83,7 +83,7 @@ check-$(1)-kernel:
 	@K_BOARD=$(1) BSCHED_QEMU=$$$$(command -v $(BOARD_$(1)_QEMU)) K_TARGET_DIR=$(call k_test_dir,$(1)) \
 	    CROSS_PREFIX=$(BOARD_$(1)_CROSS) ci/pytest-suite $(1)-kernel kernel/tests/target-kernel
 endef
-$(foreach b,$(filter-out robocube,$(BOARDS)),$(eval $(call k_board_suite,$(b))))
+$(foreach b,$(filter-out robocube,$(IMAGE_BOARDS)),$(eval $(call k_board_suite,$(b))))
 
 check-kernel-target:
 	@$(SETUP) base m68k qemu

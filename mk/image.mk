@@ -51,14 +51,14 @@ FW_POSIX_FEATURES := -D_POSIX_THREADS=1 -D_POSIX_TIMERS=1 -D_POSIX_MONOTONIC_CLO
 # Extra flags for every image object (the stack check's -fstack-usage: assure/assure.mk).
 FW_EXTRA_CFLAGS :=
 
-BOARDS := $(sort $(notdir $(patsubst %/board.mk,%,$(wildcard boards/*/board.mk))))
+IMAGE_BOARDS := $(sort $(notdir $(patsubst %/board.mk,%,$(wildcard boards/*/board.mk))))
 
 board_cc      = $(BOARD_$(1)_CROSS)gcc
 board_ar      = $(BOARD_$(1)_CROSS)ar
 board_objcopy = $(BOARD_$(1)_CROSS)objcopy
 board_size    = $(BOARD_$(1)_CROSS)size
 # GCC's own headers for each board's compiler, asked once per make run.
-$(foreach b,$(BOARDS),$(eval board_gcc_include_$(b) := $(shell $(call board_cc,$(b)) -print-file-name=include 2>/dev/null)))
+$(foreach b,$(IMAGE_BOARDS),$(eval board_gcc_include_$(b) := $(shell $(call board_cc,$(b)) -print-file-name=include 2>/dev/null)))
 # The C headers an image sees: GCC's own, the POSIX layer's (posix/include:
 # its pthread types stand in for newlib's) and the board's C library's, in that
 # order, never the build machine's (-nostdinc).
@@ -106,8 +106,8 @@ endif
 endef
 
 # Each board's base, compiled once.
-$(foreach b,$(BOARDS),$(eval $(call image_objrules,$(b),$(BOARD_$(b)_BUILD)/obj,)))
-$(foreach b,$(BOARDS),$(eval .SECONDARY: $(call board_base_objs,$(b))))
+$(foreach b,$(IMAGE_BOARDS),$(eval $(call image_objrules,$(b),$(BOARD_$(b)_BUILD)/obj,)))
+$(foreach b,$(IMAGE_BOARDS),$(eval .SECONDARY: $(call board_base_objs,$(b))))
 
 # $(call image_lib,BOARD,DIR,LIB,OBJDIR): DIR/libLIB.a from OBJDIR's objects.
 define image_lib
@@ -152,7 +152,7 @@ endef
 
 # Header dependencies from -MMD, for every board; the empty recipe stops make
 # from looking for implicit rules to remake them.
-IMAGE_DEPS := $(shell find $(sort $(foreach b,$(BOARDS),$(BOARD_$(b)_BUILD))) -name '*.d' 2>/dev/null)
+IMAGE_DEPS := $(shell find $(sort $(foreach b,$(IMAGE_BOARDS),$(BOARD_$(b)_BUILD))) -name '*.d' 2>/dev/null)
 $(IMAGE_DEPS): ;
 -include $(IMAGE_DEPS)
 

@@ -21,4 +21,4 @@ check-$(1)-posix:
 	@K_BOARD=$(1) BSCHED_QEMU=$$$$(command -v $(BOARD_$(1)_QEMU)) FW_DIR=$(BOARD_$(1)_BUILD) \
 	    ci/pytest-suite $(1)-posix apps/posixcheck/tests apps/posixmeasure/tests
 endef
-$(foreach b,$(filter-out robocube,$(BOARDS)),$(if $(filter posix,$(BOARD_$(b)_CAPS)),$(eval $(call posix_board_suite,$(b)))))
+$(foreach b,$(filter-out robocube,$(IMAGE_BOARDS)),$(if $(filter posix,$(BOARD_$(b)_CAPS)),$(eval $(call posix_board_suite,$(b)))))

@@ -1,13 +1,12 @@
 /*
  * The shared start-up of the firmware images (boards/include/board.h) and the
  * status LED (boards/include/board_led.h) on the MPS2 AN385: the interface
- * every board gives (boards/common/board_common.c has what all share).
+ * every board gives (boards/common/board_common.c has what every board shares,
+ * board_armv7m.c what the ARMv7-M boards do).
  */
 #include "boards/include/board.h"
 #include "boards/include/board_led.h"
 
-#include "k_board.h"
-#include "armv7m.h"
 #include "mps2_an385.h"
 #include "boards/mps2-an385/board_mps2_an385.h"
 
@@ -35,36 +34,6 @@ void led_toggle(void)
 bool led_is_on(void)
 {
     return (FPGAIO_LED & 1u) != 0u;
-}
-
-void board_halt(const char *image, const char *why)
-{
-    board_say(image, why);
-    armv7m_halt();
-}
-
-/* ARM semihosting SYS_EXIT (ADP_Stopped_ApplicationExit): QEMU, started with
- * -semihosting-config enable=on (make run does), ends the emulation; a board
- * without a debugger attached would fault on the BKPT, so it only comes
- * after the message, and the fault handler halts. */
-void board_power_off(const char *image, const char *why)
-{
-    board_say(image, why);
-    {
-        /* set after the call above, which is free to use r0 and r1 */
-        register uint32_t op __asm__("r0") = 0x18u;       /* SYS_EXIT */
-        register uint32_t arg __asm__("r1") = 0x20026u;   /* ADP_Stopped_ApplicationExit */
-        __asm__ __volatile__("bkpt 0xab" : : "r"(op), "r"(arg) : "memory");
-    }
-    armv7m_halt();
-}
-
-void board_start(const char *image)
-{
-    k_init();
-    led_init();
-    if (k_board_init() != 0)
-        board_halt(image, "k_board_init failed: no console interrupt or no SysTick rate for K_TICK_HZ\n");
 }
 
 int board_console_rx_start(board_console_rx_sink sink)

@@ -7,12 +7,16 @@ BOARD_mps2-an385_CPU     := armv7m
 BOARD_mps2-an385_MCPU    := cortex-m3
 BOARD_mps2-an385_CROSS   := arm-none-eabi-
 # Debian's newlib for arm-none-eabi (ci/setup.d/arm.sh), the headers this
-# folder's sources include by their bare names.
-BOARD_mps2-an385_CFLAGS  := -isystem /usr/lib/arm-none-eabi/include -I$(ROOT)/boards/mps2-an385
-BOARD_mps2-an385_SOURCES := boards/mps2-an385/vectors.c
+# folder's sources include by their bare names, and the NVIC lines the port's
+# vector table has (QEMU gives the AN385's Cortex-M3 32).
+BOARD_mps2-an385_CFLAGS  := -isystem /usr/lib/arm-none-eabi/include -I$(ROOT)/boards/mps2-an385 \
+                            -DARMV7M_IRQ_LINES=32u
+# Everything it links once is the port's (kernel/arch/armv7m/port.mk).
+BOARD_mps2-an385_SOURCES :=
 # The kernel's board hooks: console on UART0, the tick on SysTick.
 BOARD_mps2-an385_KERNEL_SOURCES := boards/mps2-an385/k_board_mps2_an385.c
-BOARD_mps2-an385_LIB_SOURCES := boards/mps2-an385/board.c boards/mps2-an385/ports.c boards/common/board_common.c
+BOARD_mps2-an385_LIB_SOURCES := boards/mps2-an385/board.c boards/mps2-an385/ports.c boards/common/board_common.c \
+                                boards/common/board_armv7m.c
 # PDL reaches the ports (the LED alone) through the board's own port access (ports.c).
 BOARD_mps2-an385_PDL_PORTS := pdl/ports/board.c
 BOARD_mps2-an385_LDSCRIPT := boards/mps2-an385/mps2-an385.ld

@@ -14,8 +14,6 @@
 
 /* SYSCLK, the core's clock and the peripherals': 25 MHz. */
 #define MPS2_AN385_CPU_HZ 25000000u
-/* NVIC lines of the AN385 image (QEMU gives its Cortex-M3 32). */
-#define MPS2_AN385_IRQ_LINES 32u
 
 /* CMSDK APB UART0: the console (QEMU's first serial port). Separate
  * interrupt lines for received and sent bytes. */

@@ -7,12 +7,16 @@ BOARD_stm32f405_CPU     := armv7m
 BOARD_stm32f405_MCPU    := cortex-m4
 BOARD_stm32f405_CROSS   := arm-none-eabi-
 # Debian's newlib for arm-none-eabi (ci/setup.d/arm.sh), the headers this
-# folder's sources include by their bare names.
-BOARD_stm32f405_CFLAGS  := -isystem /usr/lib/arm-none-eabi/include -I$(ROOT)/boards/stm32f405
-BOARD_stm32f405_SOURCES := boards/stm32f405/vectors.c
+# folder's sources include by their bare names, and the NVIC lines the port's
+# vector table has (RM0090 table 61: IRQ 0..81).
+BOARD_stm32f405_CFLAGS  := -isystem /usr/lib/arm-none-eabi/include -I$(ROOT)/boards/stm32f405 \
+                           -DARMV7M_IRQ_LINES=82u
+# Everything it links once is the port's (kernel/arch/armv7m/port.mk).
+BOARD_stm32f405_SOURCES :=
 # The kernel's board hooks: console on USART1, the tick on SysTick.
 BOARD_stm32f405_KERNEL_SOURCES := boards/stm32f405/k_board_stm32f405.c
-BOARD_stm32f405_LIB_SOURCES := boards/stm32f405/board.c boards/stm32f405/ports.c boards/common/board_common.c
+BOARD_stm32f405_LIB_SOURCES := boards/stm32f405/board.c boards/stm32f405/ports.c boards/common/board_common.c \
+                               boards/common/board_armv7m.c
 # PDL reaches the ports through the board's own port access (ports.c).
 BOARD_stm32f405_PDL_PORTS := pdl/ports/board.c
 BOARD_stm32f405_LDSCRIPT := boards/stm32f405/stm32f405.ld

@@ -12,7 +12,8 @@ CPU_armv7m_CFLAGS  := -std=c99 -mthumb -mfloat-abi=soft -Os -g -ffreestanding -W
 CPU_armv7m_ASFLAGS := -mthumb -g -I$(ROOT)/kernel/arch/armv7m -MMD -MP
 CPU_armv7m_LDFLAGS := -mthumb -mfloat-abi=soft -nostdlib -Wl,--gc-sections -Wl,--build-id=none \
                       -Wl,-z,noexecstack
-# Linked once per board: the reset entry and the fault reporter.
-CPU_armv7m_SOURCES := kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c
+# Linked once per board: the vector table (sized by the board's
+# -DARMV7M_IRQ_LINES), the reset entry and the fault reporter.
+CPU_armv7m_SOURCES := kernel/arch/armv7m/vectors.c kernel/arch/armv7m/start.c kernel/arch/armv7m/fault.c
 # Compiled with the kernel, per image: the context switch, interrupt levels, the MPU guard.
 CPU_armv7m_KERNEL_SOURCES := kernel/arch/armv7m/k_arch_armv7m.c kernel/arch/armv7m/switch.S

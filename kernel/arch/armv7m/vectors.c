@@ -1,21 +1,26 @@
 /*
- * Vector table of the MPS2 AN385 (Cortex-M3): the system handlers of the
- * ARMv7-M port and the 32 NVIC lines through the kernel's interrupt entry (a
- * line nobody registered counts as spurious: k_irq_dispatch). At 0, the
- * start of ZBT SSRAM1, where the core fetches the reset vector.
+ * The vector table of every ARMv7-M board: the port's system handlers and
+ * every NVIC line through the kernel's interrupt entry (a line nobody
+ * registered counts as spurious: k_irq_dispatch). The board gives its number
+ * of lines, ARMV7M_IRQ_LINES, in its compile flags (boards/NAME/board.mk),
+ * and its linker script puts the .vectors section where its reset fetch
+ * finds it (address 0, or memory the chip aliases there).
  */
 #include <stdint.h>
 
 #include "armv7m.h"
-#include "mps2_an385.h"
+
+#ifndef ARMV7M_IRQ_LINES
+#error "ARMV7M_IRQ_LINES: the board's number of NVIC lines (BOARD_NAME_CFLAGS in its board.mk)"
+#endif
 
 extern uint32_t __stack_top[];
 
-const unsigned armv7m_irq_lines = MPS2_AN385_IRQ_LINES;
+const unsigned armv7m_irq_lines = ARMV7M_IRQ_LINES;
 
 /* __extension__: the GNU range designator fills the NVIC entries. */
 __extension__ __attribute__((section(".vectors"), used))
-void (*const armv7m_vectors[16u + MPS2_AN385_IRQ_LINES])(void) = {
+void (*const armv7m_vectors[16u + ARMV7M_IRQ_LINES])(void) = {
     [0] = (void (*)(void))(uintptr_t)__stack_top,
     [1] = armv7m_reset,
     [2] = armv7m_fault,             /* NMI: nothing raises it; reported if it comes */
@@ -28,5 +33,5 @@ void (*const armv7m_vectors[16u + MPS2_AN385_IRQ_LINES])(void) = {
     [12] = armv7m_fault, [13] = armv7m_fault,
     [ARMV7M_EXC_PENDSV] = armv7m_pendsv,
     [ARMV7M_EXC_SYSTICK] = armv7m_systick,
-    [16 ... 16u + MPS2_AN385_IRQ_LINES - 1u] = k_arch_irq_entry,
+    [16 ... 16u + ARMV7M_IRQ_LINES - 1u] = k_arch_irq_entry,
 };
