@@ -82,13 +82,22 @@ include bsched/dist/dist.mk
 include bsched/tests/package/package.mk
 include emu/emu.mk
 include emu/io.mk
+# The CPU ports' compiler flags, the boards (each declares the variables of
+# mk/image.mk and nothing else) and the image pipeline that builds any image
+# for any of them.
+include kernel/arch/cpu32/port.mk
+include kernel/arch/armv7m/port.mk
 include boards/robocube/board.mk
+include boards/stm32f405/board.mk
+include boards/mps2-an385/board.mk
+include mk/image.mk
 include kernel/kernel.mk
 include drivers/drivers.mk
 include drivers/motion.mk
 include drivers/shell.mk
 include net/net.mk
 include pdl/pdl.mk
+include posix/posix.mk
 include emu/world/world.mk
 # Assurance: its checks run over every part above and every image.
 include assure/assure.mk
@@ -96,8 +105,9 @@ include assure/assure.mk
 include apps/apps.mk
 # The bench: the library and Fig. 7 on the host and on a bare CPU32 image.
 include bench/bench.mk
-# A board beside the RoboCube (BOARD=stm32f405): it builds the apps above.
-include boards/stm32f405/board.mk
+# The boards' own suites (the firmware on each beside the RoboCube).
+include boards/stm32f405/tests/tests.mk
+include boards/mps2-an385/tests/tests.mk
 
 .PHONY: all check setup run clean check-stress
 all: $(ALL)

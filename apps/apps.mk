@@ -1,25 +1,28 @@
 # Firmware images: one folder each, apps/NAME/, with an app.mk and its sources.
 #
-#   make firmware [APP=NAME]     build/firmware/NAME/NAME.elf (+ .srec, .map)
-#   make firmware-all            every image
-#   make run [APP=NAME]          boot it on the emulated RoboCube (default: $(APP_DEFAULT)),
+#   make firmware [APP=NAME] [BOARD=B]  the image for board B (default robocube):
+#                                build/firmware/NAME/NAME.elf (+ .srec, .map) on the RoboCube,
+#                                BOARD_B_BUILD/NAME/NAME.elf (+ .bin, .map) on another
+#   make firmware-all            every image for the RoboCube
+#   make run [APP=NAME] [BOARD=B]  boot it on the emulated board (default: $(APP_DEFAULT)),
 #                                or run the app's host runner if it names one
 #
-# An image is apps/NAME/*.c, linked with the firmware base objects (startup,
-# console, PIT, bsched.c: boards/robocube/board.mk), the C library and the CPU32
-# compiler runtime (FW_LIBC_LIBS, CPU32_RT: Makefile), the nanokernel, the board's
-# side of boards/include/ (start-up, LED: FW_BOARD_LIB_SRCS) and the libraries
-# drivers/, net/, pdl/ and posix/ (every *.c directly in those folders; host
-# code and tests live in their subfolders). The kernel and the libraries are
-# compiled per image at the image's tick rate and linked as archives, so an
-# image carries only the modules it calls. apps/NAME/app.mk may set:
+# The image pipeline is mk/image.mk: an image is apps/NAME/*.c, linked with the
+# board's base (start-up, console, bsched.c), the nanokernel at the image's tick
+# rate, the board interface and the libraries drivers/, net/, pdl/ and posix/,
+# archives compiled per image, so an image carries only the modules it calls,
+# and the board's C library. apps/NAME/app.mk may set:
+#   NAME_NEEDS     the capabilities it needs of a board (mk/image.mk's IMAGE_CAPS;
+#                  default console tick libc ports, what a program from the
+#                  PDL template uses): make refuses a board that lacks one
+#   NAME_BOARDS    the boards it is for (default every board that has what it needs)
 #   NAME_TICK_HZ   kernel tick rate (default 1024)
 #   NAME_CFLAGS    extra compiler flags for the image's own sources and libraries
 #   NAME_SRCS      the image's sources (default apps/NAME/*.c)
-#   NAME_SRCS_BOARD  its sources on another board (e.g. shell_SRCS_stm32f405),
+#   NAME_SRCS_BOARD  its sources on board BOARD (e.g. shell_SRCS_stm32f405),
 #                  for an image with a part per board; default NAME_SRCS
 #   NAME_RUN_ARGS  extra QEMU arguments for make run (serial ports, QMP, ...)
-#   NAME_ICOUNT    the -icount setting for make run (default $(FW_ICOUNT))
+#   NAME_ICOUNT_BOARD  the -icount setting for make run on BOARD (default BOARD_BOARD_ICOUNT)
 #   NAME_RUNNER    a host command that make run starts instead of QEMU on the
 #                  console (e.g. a co-simulation that starts QEMU itself)
 #   NAME_RUN_DEPS  further targets make run builds first (e.g. host libraries)
@@ -39,72 +42,38 @@
 #   make run APP=x HOST=1          the same program on the PDL host runtime in the same
 #                                  arena (WORLD defaults to default), fast
 # In an arena: SIM_SECONDS (virtual seconds, default 120) and SEED (the world's
-# sensor noise) as for the ecosystem (emu/eco.mk), the summary in build/run/x/.
+# sensor noise) as for the ecosystem (emu/world/world.mk), the summary in build/run/x/.
 
 APPS        := $(sort $(notdir $(patsubst %/app.mk,%,$(wildcard apps/*/app.mk))))
 # What make run boots when APP is not given: the ecosystem on the RoboCube;
 # on another board, whose hardware it lacks, table1 (Table 2 from bsched.c).
 APP_DEFAULT := $(if $(filter-out robocube,$(or $(BOARD),robocube)),table1,ecosystem)
 APP         ?= $(APP_DEFAULT)
-# Libraries every image may link: the target sources directly in these folders,
-# and the board's interface (board, FW_BOARD_LIB_SRCS: boards/robocube/board.mk).
-APP_LIB_DIRS := board drivers net pdl posix
-APP_LIB_SRCS_board := $(FW_BOARD_LIB_SRCS)
-APP_LIB_SRCS_pdl := $(wildcard pdl/*.c) $(FW_PDL_PORTS_SRCS)
-# Already in the firmware base objects or the kernel's own source list; the
-# main-thread start-up is linked by name (NAME_BOOT), never from the archive.
-APP_BOOT_SRC := drivers/board_main.c
-APP_LIB_EXCLUDE := $(FW_BASE_SRCS) $(K_TARGET_SRCS) $(APP_BOOT_SRC)
-# Set by a part's .mk: flags its library sources need (net/: Mbed TLS's
-# configuration and headers) and libraries they call (Mbed TLS for the CPU32),
-# linked in the group with the images' libraries and the C library.
-
 include $(wildcard apps/*/app.mk)
 
-app_lib_srcs = $(filter-out $(APP_LIB_EXCLUDE),$(or $(APP_LIB_SRCS_$(1)),$(wildcard $(1)/*.c)))
-
-# $(call app_lib_template,NAME,DIR): build/firmware/NAME/libDIR.a
-define app_lib_template
-$$(FW_BUILD)/$(1)/lib$(2).a: $$(patsubst %,$$(FW_BUILD)/$(1)/obj/%.o,$$(call app_lib_srcs,$(2)))
-	@mkdir -p $$(@D)
-	$$(call quiet,AR,$$@)rm -f $$@ && $$(CROSS_AR) rcs $$@ $$^
-endef
-
-# $(call app_template,NAME)
-define app_template
+# An app's defaults, its sources on a board, and why it does not build there.
+define app_defaults
 $(1)_TICK_HZ ?= 1024
 $(1)_SRCS    ?= $$(wildcard apps/$(1)/*.c)
-$(1)_ICOUNT  ?= $$(FW_ICOUNT)
 $(1)_BOOT    ?= board
-$(1)_DIR     := $$(FW_BUILD)/$(1)
-$(1)_FLAGS   := $$(FW_CFLAGS) -I$$(ROOT)/kernel/include -I$$(ROOT)/kernel \
-                -DK_TICK_HZ=$$($(1)_TICK_HZ) -DFW_IMAGE_NAME='"$(1)"' $$(APP_LIB_CFLAGS) $$($(1)_CFLAGS)
-$(1)_KOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(K_TARGET_SRCS))
-$(1)_AOBJS   := $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$($(1)_SRCS) \
-                  $$(if $$(filter self,$$($(1)_BOOT)),,$$(APP_BOOT_SRC)))
-$(1)_LIBS    := $$(foreach d,$$(APP_LIB_DIRS),$$(if $$(call app_lib_srcs,$$(d)),$$($(1)_DIR)/lib$$(d).a))
-
-$$($(1)_DIR)/obj/%.c.o: %.c
-	@mkdir -p $$(@D)
-	$$(call quiet,CC,$$<)$$(CROSS_CC) $$($(1)_FLAGS) -c -o $$@ $$<
-
-$$($(1)_DIR)/obj/%.S.o: %.S
-	@mkdir -p $$(@D)
-	$$(call quiet,CC,$$<)$$(CROSS_CC) $$(FW_ASFLAGS) -c -o $$@ $$<
-
-$$(foreach d,$$(APP_LIB_DIRS),$$(eval $$(call app_lib_template,$(1),$$(d))))
-
-$$(call app_elf,$(1)): $$(FW_BASE_OBJS) $$($(1)_KOBJS) $$($(1)_AOBJS) $$($(1)_LIBS) $$(FW_LDSCRIPT) $$(CPU32_RT) \
-                       $$(FW_LIBC_LIBS) $$(APP_LIB_LINK)
-	$$(call quiet,LD,$$@)$$(CROSS_CC) $$(FW_LDFLAGS) -Wl,-Map=$$(@:.elf=.map) -o $$@ $$(FW_BASE_OBJS) $$($(1)_KOBJS) \
-	    $$($(1)_AOBJS) -Wl,--start-group $$($(1)_LIBS) $$(APP_LIB_LINK) $$(FW_LIBC_LIBS) -Wl,--end-group $$(CPU32_RT)
-	$$(call quiet,OBJCOPY,$$@)$$(CROSS_OBJCOPY) -O srec $$@ $$(@:.elf=.srec)
-	$$(if $$(filter 1,$$(V)),$$(CROSS_SIZE) $$@,@true)
-
-.SECONDARY: $$($(1)_KOBJS) $$($(1)_AOBJS) $$(patsubst %,$$($(1)_DIR)/obj/%.o,$$(foreach d,$$(APP_LIB_DIRS),$$(call app_lib_srcs,$$(d))))
+$(1)_NEEDS   ?= console tick libc ports
+$(1)_BOARDS  ?= $$(IMAGE_BOARDS)
 endef
+$(foreach a,$(APPS),$(eval $(call app_defaults,$(a))))
+# The image of app NAME on BOARD, and on the RoboCube.
+image_elf = $(BOARD_$(1)_BUILD)/$(2)/$(2).elf
+app_elf   = $(call image_elf,robocube,$(1))
+app_srcs  = $(or $($(2)_SRCS_$(1)),$($(2)_SRCS)) $(if $(filter self,$($(2)_BOOT)),,$(APP_BOOT_SRC))
+# $(call app_refusal,BOARD,NAME): the line make stops with when NAME does not
+# build for BOARD (empty when it does).
+app_refusal = $(strip $(if $(filter $(1),$($(2)_BOARDS)),\
+    $(if $(call board_lacks,$(1),$($(2)_NEEDS)),APP=$(2) needs $(call board_lacks,$(1),$($(2)_NEEDS)): BOARD=$(1) lacks $(if $(word 2,$(call board_lacks,$(1),$($(2)_NEEDS))),them,it) (it has: $(BOARD_$(1)_CAPS))),\
+    APP=$(2) is for BOARD=$(subst $(space),|,$($(2)_BOARDS)) only))
+app_icount = $(or $($(2)_ICOUNT_$(1)),$(BOARD_$(1)_ICOUNT))
 
-$(foreach a,$(APPS),$(eval $(call app_template,$(a))))
+$(foreach b,$(IMAGE_BOARDS),$(foreach a,$(APPS),$(if $(call app_refusal,$(b),$(a)),,\
+    $(eval $(call image,$(b),$(a),$(BOARD_$(b)_BUILD)/$(a),$(call image_elf,$(b),$(a)),$(call app_srcs,$(b),$(a)),\
+        -DK_TICK_HZ=$($(a)_TICK_HZ) $(APP_LIB_CFLAGS) $($(a)_CFLAGS),app)))))
 
 # A program on the PDL host runtime, for the arena's host mode (make run
 # APP=NAME HOST=1): its sources with main renamed, the arena's driver of main
@@ -123,32 +92,46 @@ $(foreach a,$(APPS),$(eval $(call app_host_template,$(a))))
 # make host-lib [APP=NAME]: that library (phony: quiet when it is up to date).
 .PHONY: host-lib
 host-lib: $(call app_host_lib,$(APP))
-# The board an image is built for and runs on: the RoboCube (this file and
-# boards/robocube/) or another of boards/NAME/ (its board.mk has the rules).
-BOARDS := $(sort robocube $(notdir $(patsubst %/board.mk,%,$(wildcard boards/*/board.mk))))
+# The board an image is built for and runs on (boards/NAME/, mk/image.mk).
 BOARD  ?= robocube
-ifneq ($(filter run firmware,$(MAKECMDGOALS)),)
+BOARD_GOALS := run firmware $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b))
+ifneq ($(filter $(BOARD_GOALS),$(MAKECMDGOALS)),)
 ifneq ($(words $(BOARD)),1)
-$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+$(error BOARD='$(BOARD)': one board name (usage: make run [BOARD=$(subst $(eval) ,|,$(IMAGE_BOARDS))] [APP=NAME]))
 endif
-ifeq ($(filter $(BOARD),$(BOARDS)),)
-$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(BOARDS))] [APP=NAME]))
+ifeq ($(filter $(BOARD),$(IMAGE_BOARDS)),)
+$(error BOARD=$(BOARD): no such board (usage: make run [BOARD=$(subst $(eval) ,|,$(IMAGE_BOARDS))] [APP=NAME]))
 endif
-endif
-
 ifeq ($(filter $(APP),$(APPS)),)
-$(if $(filter run firmware,$(MAKECMDGOALS)),$(error APP=$(APP): no such image (have: $(APPS))))
+$(error APP=$(APP): no such image (have: $(APPS)))
+endif
+# An image that needs what the board lacks stops here, in one line.
+$(foreach b,$(or $(patsubst run-%,%,$(patsubst firmware-%,%,$(filter $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b)),$(MAKECMDGOALS)))),$(BOARD)),\
+    $(if $(call app_refusal,$(b),$(APP)),$(error $(call app_refusal,$(b),$(APP)))))
 endif
 
 FW_ELF := $(call app_elf,$(APP))
 
-.PHONY: firmware firmware-all run
+.PHONY: firmware firmware-all run $(foreach b,$(IMAGE_BOARDS),run-$(b) firmware-$(b))
 firmware-all: $(foreach a,$(APPS),$(call app_elf,$(a)))
-ifneq ($(BOARD),robocube)
 firmware: firmware-$(BOARD)
-else
-firmware: $(FW_ELF)
-endif
+$(foreach b,$(IMAGE_BOARDS),$(eval firmware-$(b): $(call image_elf,$(b),$(APP))))
+
+# make run on a board without the RoboCube's world: the image on its QEMU
+# machine, console on stdio. Piped input waits for the board's first output
+# (robocube_emu.console_gate): QEMU's USART model drops what it is given
+# before the firmware enables it.
+define run_board
+run-$(1):
+	@$$(SETUP) base $(BOARD_$(1)_SETUP)
+	@$$(MAKE) --no-print-directory $$(if $$(filter 1,$$(V)),,-s) firmware-$(1) BOARD=$(1) APP=$$(APP)
+	@echo "make run: booting $$(call image_elf,$(1),$$(APP)) on $(notdir $(BOARD_$(1)_QEMU)) -M $(BOARD_$(1)_QEMU_MACHINE) (console = $(BOARD_$(1)_CONSOLE) on stdio$$(if $$(RUN_SECONDS),; stops after $$(RUN_SECONDS) s)$$(if $$($$(APP)_QUIT),; $$($$(APP)_QUIT)); quit with Ctrl-C)" >&2
+	@$$(if $$(RUN_SECONDS),timeout --foreground $$(RUN_SECONDS)) \
+	    $$$$([ -t 0 ] || echo $$(PYTHON) -m robocube_emu.console_gate) $(BOARD_$(1)_QEMU) -M $(BOARD_$(1)_QEMU_MACHINE) \
+	    -icount $$(call app_icount,$(1),$$(APP)) -kernel $$(call image_elf,$(1),$$(APP)) $$(QEMU_CONSOLE_ARGS) $(BOARD_$(1)_QEMU_ARGS) \
+	    $$($$(APP)_RUN_ARGS); rc=$$$$?; [ $$$$rc -eq 0 ] || [ "$$(RUN_SECONDS)" != "" -a $$$$rc -eq 124 ]
+endef
+$(foreach b,$(filter-out robocube,$(IMAGE_BOARDS)),$(eval $(call run_board,$(b))))
 
 # make run's options, checked before anything is built: a bad value gets one
 # line naming it (make's $(error): exit status 2), never a raw error from
@@ -213,7 +196,8 @@ QEMU_CONSOLE_ARGS := -display none -monitor none -serial stdio
 ifneq ($(BOARD),robocube)
 run: run-$(BOARD)
 else
-run:
+run: run-robocube
+run-robocube:
 	@$(SETUP) qemu m68k $(if $($(APP)_RUNNER)$(RUN_IN_ARENA),base)
 	@$(MAKE) --no-print-directory $(if $(filter 1,$(V)),,-s) $(if $(filter 1,$(HOST)),,firmware) $($(APP)_RUN_DEPS) APP=$(APP) \
 	    $(if $(and $(filter 1,$(HOST)),$(if $($(APP)_RUNNER),,1)),host-lib)
@@ -226,7 +210,7 @@ else ifneq ($(RUN_IN_ARENA),)
 else
 	@echo "make run: booting $(FW_ELF) on $(QEMU_M68K) -M robocube (console = DUART B on stdio$(if $(RUN_SECONDS),; stops after $(RUN_SECONDS) s)$(if $($(APP)_QUIT),; $($(APP)_QUIT)); quit with Ctrl-C)" >&2
 	@$(if $(RUN_SECONDS),timeout --foreground $(RUN_SECONDS)) \
-	    $(QEMU_M68K) -M robocube -icount $($(APP)_ICOUNT) -kernel $(FW_ELF) $(QEMU_CONSOLE_ARGS) $($(APP)_RUN_ARGS); rc=$$?; \
+	    $(QEMU_M68K) -M robocube -icount $(call app_icount,robocube,$(APP)) -kernel $(FW_ELF) $(QEMU_CONSOLE_ARGS) $($(APP)_RUN_ARGS); rc=$$?; \
 	    [ $$rc -eq 0 ] || [ "$(RUN_SECONDS)" != "" -a $$rc -eq 124 ]
 endif
 endif

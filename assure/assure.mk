@@ -103,7 +103,7 @@ check-mutants-sample:
 # own BUILD tree; assure/stack.py walks the call graph from each thread's entry
 # and from the interrupt entry and compares with the stack each thread is given.
 ifdef FW_STACK_INFO
-FW_CFLAGS += -fstack-usage -fcallgraph-info=su
+FW_EXTRA_CFLAGS += -fstack-usage -fcallgraph-info=su
 endif
 STACK_BUILD := $(ASSURE)/stack
 # full (make check): every thread must fit its own deepest call chain plus what the

@@ -56,10 +56,13 @@ def jump_tables(lines, code):
     return ranges
 
 
-def instructions(objdump, path):
-    """(address, function, mnemonic, operands) of every instruction in every code
-    section, jump tables left out."""
-    out = subprocess.run([objdump, "-d", path], check=True, capture_output=True, text=True).stdout
+def decode(objdump, path, *window):
+    """objdump's decoding of path (or of the address window [start, stop)):
+    (address, function, mnemonic, operands) in order, and the code bytes."""
+    args = [objdump, "-d", path]
+    if window:
+        args[2:2] = ["--start-address=0x%x" % window[0], "--stop-address=0x%x" % window[1]]
+    out = subprocess.run(args, check=True, capture_output=True, text=True).stdout
     function = "?"
     decoded, code = [], {}
     for line in out.splitlines():
@@ -76,7 +79,28 @@ def instructions(objdump, path):
             parts = fields[2].split(None, 1) if len(fields) >= 3 else []
             if parts:
                 decoded.append((address, function, parts[0], parts[1] if len(parts) > 1 else ""))
+    return decoded, code
+
+
+def instructions(objdump, path):
+    """(address, function, mnemonic, operands) of every instruction in every code
+    section, jump tables left out. Decoding the table as instructions may run
+    past its end, and then the code after it comes out of step (an operand
+    word taken for an opcode); that code is decoded again from the table's
+    end, up to where both decodings meet."""
+    decoded, code = decode(objdump, path)
     tables = jump_tables([(a, m, o) for a, _, m, o in decoded], code)
+    starts = {a for a, _, _, _ in decoded}
+    redone = {}
+    for _, end in tables:
+        if end in starts or end not in code:
+            continue
+        again, _ = decode(objdump, path, end, end + 64)
+        meet = next((a for a, _, _, _ in again if a in starts), end + 64)
+        redone[end] = (meet, [i for i in again if i[0] < meet])
+    for end, (meet, fresh) in redone.items():
+        decoded = [i for i in decoded if not end <= i[0] < meet] + fresh
+    decoded.sort()
     for address, function, mnemonic, operands in decoded:
         if not any(start <= address < end for start, end in tables):
             yield "%x" % address, function, mnemonic, operands

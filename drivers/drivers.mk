@@ -13,6 +13,12 @@ DRV_HOST_TESTS := $(DRV_BUILD)/tests/test_i2c_fsm $(DRV_BUILD)/tests/test_analog
 DRV_IO_SRCS := drivers/i2c.c drivers/i2c_fsm.c drivers/analog.c drivers/bio.c drivers/binin.c \
                drivers/fastout.c drivers/sampler.c drivers/board_io.c
 
+# What the image pipeline builds for a board only when it has it (mk/image.mk):
+# the I2C driver's interrupt handlers are the CPU32's vectors; the system
+# calls are newlib's.
+NEEDS_i2c  += drivers/i2c.c
+NEEDS_libc += drivers/libc_syscalls.c
+
 ALL += $(DRV_HOST_TESTS)
 CHECKS += drivers-unit
 HOST_UNIT_CHECKS += drivers-unit

@@ -1,9 +1,12 @@
 /*
- * The system calls newlib (build/newlib, ci/setup.d/m68k/newlib.sh) needs on
- * the RoboCube: its stdio on the console, its malloc in the SRAM between .bss
- * and the stack, exit and abort as a halt. newlib is built with
- * MISSING_SYSCALL_NAMES, so it calls them by their POSIX names (write, not
- * _write). An image that calls no C library function links none of this.
+ * The system calls newlib needs on every board: its stdio on the console, its
+ * malloc in the SRAM between .bss and the stack (the linker script's __bss_end,
+ * __stack_top and __stack_size), exit and abort as a halt. The RoboCube's
+ * newlib (build/newlib, ci/setup.d/m68k/newlib.sh) is built with
+ * MISSING_SYSCALL_NAMES and calls them by their POSIX names (write); Debian's
+ * newlib for arm-none-eabi calls them by the reserved ones (_write), which
+ * call the same functions (at the end). An image that calls no C library
+ * function links none of this.
  *
  *   fd 0  console input: canonical lines (edited and echoed by console_in.c),
  *         each returned with its '\n'; read waits for a line (a terminal does)
@@ -187,3 +190,16 @@ void _exit(int status)
     (void)k_snprintf(message, sizeof message, "exit %d\n", status);
     board_halt("libc", message);
 }
+
+/* The reserved names Debian's arm-none-eabi newlib calls (see the top): each
+ * the function above by its POSIX name. Functions, not aliases, so that each
+ * name has its own frame in GCC's call graph (assure/stack.py reads it). */
+int _write(int fd, const void *buf, size_t count) { return write(fd, buf, count); }
+int _read(int fd, void *buf, size_t count) { return read(fd, buf, count); }
+void *_sbrk(ptrdiff_t increment) { return sbrk(increment); }
+int _close(int fd) { return close(fd); }
+int _fstat(int fd, struct stat *st) { return fstat(fd, st); }
+int _isatty(int fd) { return isatty(fd); }
+off_t _lseek(int fd, off_t offset, int whence) { return lseek(fd, offset, whence); }
+int _getpid(void) { return getpid(); }
+int _kill(int pid, int sig) { return kill(pid, sig); }

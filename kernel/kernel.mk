@@ -3,8 +3,9 @@
 #
 #   make kernel-host-tests     build/kernel/tests/test_k_struct, test_k_threads
 #   make check-kernel-unit     run them (strict HOST_CFLAGS)
-#   make kernel-target         build/kernel/target/ktest.elf (all target tests in one image)
-#   make check-kernel-target   boot it once per test mode on qemu -M robocube, judged by pytest
+#   make kernel-target         build/kernel/target/ktest-MODE.elf (one image per test mode)
+#   make check-kernel-target   boot each on qemu -M robocube, judged by pytest
+#   make check-NAME-kernel     the same on board NAME (boards/NAME/)
 #   make kernel-size           kernel text size for CPU32 at -Os
 
 K_BUILD      := $(BUILD)/kernel
@@ -36,54 +37,53 @@ check-kernel-unit: $(K_HOST_TESTS)
 	@$(SETUP) base
 	@RESULTS=$(RESULTS) ci/cmocka-suite kernel-unit $(K_HOST_TESTS)
 
-# ---- CPU32 target ----
-# -fno-store-merging as for every firmware image (boards/robocube/board.mk): GCC 12
-# merges adjacent byte stores into a word store at an odd address, an address
-# error on the CPU32 (it did so for two byte fields of struct k_thread).
-K_CROSS_CFLAGS := $(CROSS_CFLAGS) -g -fno-tree-loop-distribute-patterns -fno-store-merging -ffunction-sections \
-                  -fdata-sections -I$(ROOT)/kernel/include -I$(ROOT)/kernel \
-                  -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched -I$(ROOT) \
-                  -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -MMD -MP
-# Everything of the kernel a CPU32 image links (with the firmware base objects),
-# and the board's support for it (boards/robocube/board.mk); every firmware
-# image (apps/apps.mk) builds the same list at its own tick rate.
-K_TARGET_SRCS := $(K_CORE_SRCS) kernel/arch/cpu32/k_arch_cpu32.c kernel/arch/cpu32/switch.S \
-                 $(BOARD_KERNEL_SRCS)
-K_TARGET_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(K_TARGET_SRCS))
-# Test modes of kernel/tests/target-kernel/ktest.c (KTEST_MODE = position).
+# ---- target ----
+# The kernel target suite's images (kernel/tests/target-kernel/ktest.c, one
+# per test mode, KTEST_MODE = position), built for every board by the image
+# pipeline (mk/image.mk): the test program per mode; the kernel (at its
+# default tick) and the board interface shared by the modes. The RoboCube's
+# stay where the tools look for them (ksize.py, kmeasure.py).
 K_TEST_MODES := preempt priority semaphore inherit queue drift overrun stackguard baduse measure \
                 overload tcbguard nesting timing
-K_TEST_ELFS  := $(patsubst %,$(K_BUILD)/target/ktest-%.elf,$(K_TEST_MODES))
 k_mode_index  = $(strip $(foreach i,1 2 3 4 5 6 7 8 9 10 11 12 13 14,$(if $(filter $(1),$(word $(i),$(K_TEST_MODES))),$(i))))
+k_test_dir    = $(if $(filter robocube,$(1)),$(K_BUILD)/target,$(BOARD_$(1)_BUILD)/kernel)
+k_test_elfs   = $(patsubst %,$(call k_test_dir,$(1))/ktest-%.elf,$(K_TEST_MODES))
+$(foreach b,$(IMAGE_BOARDS),$(foreach m,$(K_TEST_MODES),$(eval $(call image,$(b),ktest-$(m),$(call k_test_dir,$(b))/$(m),\
+    $(call k_test_dir,$(b))/ktest-$(m).elf,kernel/tests/target-kernel/ktest.c,-DKTEST_MODE=$(call k_mode_index,$(m)),kernel,\
+    $(call k_test_dir,$(b))))))
+K_TEST_ELFS  := $(call k_test_elfs,robocube)
+
+# The CPU32 port's fault report images (kernel/tests/target/fault_image.c,
+# FAULT_KIND = position) on the RoboCube's base alone; the firmware-boot suite
+# boots them (apps/table1/app.mk).
+FW_FAULT_KINDS := unmapped flashwrite illegal zerodivide
+FW_FAULT_ELFS  := $(patsubst %,$(FW_BUILD)/tests/fault-%.elf,$(FW_FAULT_KINDS))
+fault_kind_index = $(strip $(foreach i,1 2 3 4,$(if $(filter $(1),$(word $(i),$(FW_FAULT_KINDS))),$(i))))
+$(foreach k,$(FW_FAULT_KINDS),$(eval $(call image,robocube,fault-$(k),$(FW_BUILD)/tests/fault-$(k),\
+    $(FW_BUILD)/tests/fault-$(k).elf,kernel/tests/target/fault_image.c,-DFAULT_KIND=$(call fault_kind_index,$(k)),bare,\
+    $(FW_BUILD)/tests/shared)))
 
 CHECKS += kernel-target
 EMU_CHECKS += kernel-target
 
-.PHONY: kernel-target check-kernel-target kernel-size
+.PHONY: kernel-target check-kernel-target kernel-size $(foreach b,$(IMAGE_BOARDS),$(b)-kernel-target)
 kernel-target: $(K_TEST_ELFS)
+$(foreach b,$(IMAGE_BOARDS),$(eval $(b)-kernel-target: $(call k_test_elfs,$(b))))
 
-$(K_BUILD)/target/obj/%.c.o: %.c
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) $(K_CROSS_CFLAGS) -c -o $@ $<
-
-$(K_BUILD)/target/obj/%.S.o: %.S
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) -mcpu=cpu32 -g -c -o $@ $<
-
-$(K_BUILD)/target/ktest-%.o: kernel/tests/target-kernel/ktest.c
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) $(K_CROSS_CFLAGS) -DKTEST_MODE=$(call k_mode_index,$*) -c -o $@ $<
-
-$(K_BUILD)/target/ktest-%.elf: $(K_BUILD)/target/ktest-%.o $(K_TARGET_OBJS) $(FW_BASE_OBJS) $(FW_LDSCRIPT)
-	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) $(K_TARGET_OBJS) $<
-
-.PRECIOUS: $(K_BUILD)/target/ktest-%.o $(K_BUILD)/target/obj/%.o
-.SECONDARY: $(K_TARGET_OBJS)
-
-# Dependency files are only read, never remade (no built-in rule may try).
-K_DEP_FILES := $(shell find $(K_BUILD)/target -name '*.d' 2>/dev/null)
-$(K_DEP_FILES): ;
--include $(K_DEP_FILES)
+# The same suite on every other board (check-NAME-kernel): the same images and
+# judgements; K_BOARD picks the board's machine and -icount
+# (robocube_emu.launch.BOARDS).
+define k_board_suite
+CHECKS += $(1)-kernel
+EMU_CHECKS += $(1)-kernel
+.PHONY: check-$(1)-kernel
+check-$(1)-kernel:
+	@$$(SETUP) base $(BOARD_$(1)_SETUP)
+	@$$(MAKE) --no-print-directory $(1)-kernel-target
+	@K_BOARD=$(1) BSCHED_QEMU=$$$$(command -v $(BOARD_$(1)_QEMU)) K_TARGET_DIR=$(call k_test_dir,$(1)) \
+	    CROSS_PREFIX=$(BOARD_$(1)_CROSS) ci/pytest-suite $(1)-kernel kernel/tests/target-kernel
+endef
+$(foreach b,$(filter-out robocube,$(IMAGE_BOARDS)),$(eval $(call k_board_suite,$(b))))
 
 check-kernel-target:
 	@$(SETUP) base m68k qemu
@@ -93,7 +93,7 @@ check-kernel-target:
 
 # Text bytes (code + constants) of the kernel and bsched.c for CPU32 at -Os:
 # every kernel object whole, then what one linked test image keeps.
-K_SIZE_OBJS := $(filter-out %/switch.S.o,$(K_TARGET_OBJS)) $(K_BUILD)/target/obj/kernel/arch/cpu32/switch.S.o
+K_SIZE_OBJS := $(patsubst %,$(K_BUILD)/target/obj/%.o,$(call board_kernel_srcs,robocube))
 kernel-size: $(K_TEST_ELFS)
 	@echo "== kernel objects (all services, nothing garbage-collected; kprintf.c is the"
 	@echo "   formatter k_printf uses), m68k-linux-gnu-size:"

@@ -270,13 +270,16 @@ check-net-cbmc:
 # tests, the CPU32 library for the board); ci/setup m68k sets it up too, since
 # every image's libnet.a has net/auth.c (net.c seals and opens every frame):
 # its configuration and headers go into the images' library flags
-# (APP_LIB_CFLAGS), the CPU32 library into their link (APP_LIB_LINK).
+# (APP_LIB_CFLAGS), the CPU32 library into the link of every image that has
+# libnet.a (APP_LIB_LINK, mk/image.mk). The network needs the board's radio
+# channel: its sources are built only for a board that has one.
 NET_AUTH_MBEDTLS := $(ROOT)/build/mbedtls
 NET_AUTH_MBEDTLS_NAMES := aes cipher cipher_wrap cmac constant_time platform_util
 NET_AUTH_CONFIG := -isystem $(NET_AUTH_MBEDTLS)/include -I$(ROOT)/net \
                    '-DMBEDTLS_CONFIG_FILE="auth_mbedtls_config.h"'
 APP_LIB_CFLAGS += $(NET_AUTH_CONFIG)
 APP_LIB_LINK += $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a
+NEEDS_radio += $(wildcard net/*.c)
 # Mbed TLS for the host tests: its own sources, warnings off (they are the
 # library's, not ours), the tests' sanitizers and coverage flags kept.
 NET_AUTH_MBEDTLS_HOST := $(patsubst %,$(NET_BUILD)/auth/mbedtls/%.o,$(NET_AUTH_MBEDTLS_NAMES))
@@ -303,7 +306,7 @@ $(NET_AUTH_SAMPLE): net/tests/auth_sample.c net/tests/sample_hex.h net/auth.c ne
 # kernel.
 NET_AUTH_BOARD_DIR := $(NET_BUILD)/auth/board
 NET_AUTH_BOARD_ELF := $(NET_AUTH_BOARD_DIR)/auth_board.elf
-NET_AUTH_BOARD_FLAGS := $(FW_CFLAGS) $(NET_AUTH_CONFIG)
+NET_AUTH_BOARD_FLAGS := $(call board_cflags,robocube) $(NET_AUTH_CONFIG)
 $(NET_AUTH_BOARD_DIR)/%.o: net/%.c net/auth.h net/auth_mbedtls_config.h
 	@mkdir -p $(@D)
 	$(call quiet,CC,$<)$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
@@ -311,9 +314,10 @@ $(NET_AUTH_BOARD_DIR)/auth_board.o: net/tests/auth/auth_board.c net/tests/rfc449
 	@mkdir -p $(@D)
 	$(call quiet,CC,$<)$(CROSS_CC) $(NET_AUTH_BOARD_FLAGS) -c -o $@ $<
 $(NET_AUTH_BOARD_ELF): $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
-                       $(FW_BASE_OBJS) $(FW_LDSCRIPT) $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a \
-                       $(CPU32_RT)
-	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -Wl,-Map=$(@:.elf=.map) -o $@ $(FW_BASE_OBJS) \
+                       $(call board_base_objs,robocube) $(BOARD_robocube_LDSCRIPT) \
+                       $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a $(CPU32_RT)
+	$(call quiet,LD,$@)$(CROSS_CC) $(call board_ldflags,robocube) -Wl,-Map=$(@:.elf=.map) -o $@ \
+	    $(call board_base_objs,robocube) \
 	    $(NET_AUTH_BOARD_DIR)/auth_board.o $(NET_AUTH_BOARD_DIR)/auth.o \
 	    $(NET_AUTH_MBEDTLS)/cpu32/libmbedcrypto.a $(CPU32_RT)
 	$(if $(filter 1,$(V)),$(CROSS_SIZE) $@,@true)

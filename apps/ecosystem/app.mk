@@ -10,6 +10,8 @@
 #   make eco-host                   build/world/libeco_host.so (the program for the host)
 #   make check-eco                  world, lockstep and ecosystem tests (pytest, ~2-3 min)
 #   make eco-survival               the full goal: 10 virtual minutes on the emulated board
+# What it needs of a board (mk/image.mk): the arena's co-simulation and the ports PDL binds.
+ecosystem_NEEDS := console tick ports world
 ecosystem_TICK_HZ := 128
 ecosystem_WORLD   := default
 ECO_HOST_LIB := $(BUILD)/world/libeco_host.so

@@ -3,6 +3,9 @@
 # the target tests (drivers/tests/target/) can drive the drivers while the host
 # sets and reads the board model over QMP. Test-only: the shell image
 # (apps/shell) is the one for people.
+# The RoboCube's I/O board, and its DUART console's internals (boards/robocube/duart_console.h).
+iotest_NEEDS  := console tick i2c analog bio
+iotest_BOARDS := robocube
 iotest_TICK_HZ := 1024
 # Its main starts the board itself (board_start ... k_start).
 iotest_BOOT := self

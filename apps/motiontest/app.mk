@@ -2,6 +2,9 @@
 # protocol on the console that drivers/tests/target_motion/ drives over stdin while
 # it checks the board model over QMP. Not a user shell (that is apps/shell).
 # Its main starts the board itself (board_start ... k_start).
+# The RoboCube's TPU and motors, and its DUART's registers (boards/robocube/mc68681.h).
+motiontest_NEEDS  := console tick tpu motors
+motiontest_BOARDS := robocube
 motiontest_BOOT := self
 
 # Its tests (suite motion-target): drivers/tests/target_motion/ boots it on the

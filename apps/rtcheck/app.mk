@@ -4,6 +4,8 @@
 # process, each compared with the host's result (apps/rtcheck/tests/). The suite
 # also runs apps/hello's tests (an ordinary main as a thread, printf's cost): that
 # image's app.mk stays the one comment line a new program needs.
+# The C library, and a PDL process for dt() and value().
+rtcheck_NEEDS := console tick libc ports
 rtcheck_SRCS := apps/rtcheck/rtcheck.c apps/rtcheck/rt_vectors.c apps/rtcheck/rt_libc.c
 
 RTCHECK_HOST := $(BUILD)/tests/rtcheck_host

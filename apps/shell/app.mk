@@ -3,7 +3,10 @@
 # guest jumps from timer to timer as fast as the host goes (measured: 34 % of
 # a host core and uptime 18 s after 5 s; README.md), so make run uses sleep=on. The
 # tests (apps/shell/tests/) run QEMU themselves with sleep=off (deterministic).
-shell_ICOUNT := shift=8,sleep=on
+# The common commands need the LED; each board it runs on has its part (shell_SRCS_BOARD).
+shell_NEEDS  := console tick led
+shell_BOARDS := robocube stm32f405
+shell_ICOUNT_robocube := shift=8,sleep=on
 # For make run's banner: exit stops the motors and switches the board off (README.md).
 shell_QUIT   := the shell's exit ends the run
 

@@ -29,14 +29,6 @@ void board_power_off(const char *image, const char *why)
         __asm__ __volatile__("lpstop #0x2700" : : : "memory");
 }
 
-void board_start(const char *image)
-{
-    k_init();
-    led_init();
-    if (k_board_init() != 0)
-        board_halt(image, "k_board_init failed: no console interrupt or no PIT rate for K_TICK_HZ\n");
-}
-
 /* The console's receiver: DUART channel B's RxRDYB interrupt, attached
  * through the DUART's shared handler (boards/robocube/duart.h). */
 #define RX_SR_ERRORS 0xF0u       /* received break, framing, parity, overrun */

@@ -1,36 +1,35 @@
-# The RoboCube board (MC68332 / CPU32): how every firmware image is compiled
-# and linked (flags, linker script), the startup and base objects every image
-# links, the kernel's board support (BOARD_KERNEL_SRCS, compiled with the
-# kernel at each image's tick rate) and the fault test images. The images
-# themselves (apps/NAME/), `make firmware` and `make run` are in apps/apps.mk;
-# the firmware-boot suite, which boots table1 and the fault images, is
-# declared beside its image in apps/table1/app.mk.
+# The RoboCube (MC68332 / CPU32, on the QEMU board model built from emu/):
+# what the image pipeline (mk/image.mk) needs to build and boot any image on
+# it. Only the variables every board declares (boards/README.md); the rules
+# are mk/image.mk's, the images apps/NAME/'s.
 
-FW_BUILD     := $(BUILD)/firmware
-# The image of firmware app NAME (apps/NAME/, built by apps/apps.mk).
-app_elf       = $(FW_BUILD)/$(1)/$(1).elf
-# Processes the firmware's struct bsched has room for (Table 1 has 9; PDL programs up to 32).
-FW_MAX_PROCS := 32
-# -fno-store-merging: GCC 12 merged adjacent byte stores into a word store at an odd
-# address in net/ (an address error on the CPU32, which has no misaligned access); the
-# net code works around it, and this keeps the class of bug out of every other part.
-# The firmware's C headers: GCC's own, the POSIX layer's (posix/include: its
-# pthread types stand in for newlib's) and newlib's, in that order. The
-# feature macros make newlib's headers declare the calls of the POSIX
-# profile the layer provides (clock_gettime, clock_nanosleep, sched_yield ...).
-FW_POSIX_FEATURES := -D_POSIX_THREADS=1 -D_POSIX_TIMERS=1 -D_POSIX_MONOTONIC_CLOCK=200112L \
-                -D_POSIX_CLOCK_SELECTION=200112L -D_POSIX_PRIORITY_SCHEDULING=1
-FW_CFLAGS    := $(CROSS_CFLAGS) -g -I$(ROOT) -I$(ROOT)/kernel/arch/cpu32 -I$(ROOT)/bsched \
-                -DBSCHED_MAX_PROCS=$(FW_MAX_PROCS) -ffunction-sections -fdata-sections \
-                -fno-tree-loop-distribute-patterns -fno-store-merging -MMD -MP \
-                -nostdinc -isystem $(shell $(CROSS_CC) -print-file-name=include) \
-                -isystem $(ROOT)/posix/include -isystem $(NEWLIB)/include $(FW_POSIX_FEATURES)
-FW_ASFLAGS   := -mcpu=cpu32 -g -I$(ROOT)/kernel/arch/cpu32 -MMD -MP
-FW_LDSCRIPT  := boards/robocube/robocube.ld
-FW_LDFLAGS   := -mcpu=cpu32 -nostdlib -T $(FW_LDSCRIPT) -Wl,--gc-sections -Wl,--build-id=none
-CROSS_SIZE   ?= m68k-linux-gnu-size
-CROSS_OBJCOPY ?= m68k-linux-gnu-objcopy
-CROSS_AR     ?= m68k-linux-gnu-ar
+# The kernel's CPU port (kernel/arch/cpu32/port.mk: its compiler flags) and the toolchain.
+BOARD_robocube_CPU      := cpu32
+BOARD_robocube_MCPU     := cpu32
+BOARD_robocube_CROSS    := m68k-linux-gnu-
+# The C library's headers (newlib, built for the CPU32 by ci/setup.d/m68k/newlib.sh).
+BOARD_robocube_CFLAGS   := -isystem $(NEWLIB)/include
+# Start-up, the polled console and the PIT: every image links them.
+BOARD_robocube_SOURCES  := boards/robocube/start.S boards/robocube/duart_console.c boards/robocube/pit.c
+# The kernel's board hooks (kernel/include/k_board.h): PIT tick, interrupt-driven
+# console; compiled with the kernel at each image's tick rate.
+BOARD_robocube_KERNEL_SOURCES := boards/robocube/k_board_robocube.c
+# The board interface (boards/include/): start-up, LED, port table, the DUART's radio channel.
+BOARD_robocube_LIB_SOURCES := boards/robocube/board.c boards/robocube/led.c boards/robocube/ports.c \
+                              boards/robocube/radio.c boards/common/board_common.c
+# PDL reaches this board's ports through its drivers (the sampler, the uniform access layer).
+BOARD_robocube_PDL_PORTS := pdl/ports/drivers.c
+BOARD_robocube_LDSCRIPT := boards/robocube/robocube.ld
+# newlib's libc and libm in the link group; the CPU32 compiler runtime after it
+# (Debian's m68k libgcc is built for the 68020/68881 and traps on the CPU32).
+BOARD_robocube_LIBS     := $(FW_LIBC_LIBS)
+BOARD_robocube_RUNTIME  := $(CPU32_RT)
+BOARD_robocube_IMAGE_FORMAT := srec
+BOARD_robocube_SETUP    := m68k qemu
+BOARD_robocube_QEMU     := $(QEMU_M68K)
+BOARD_robocube_QEMU_MACHINE := robocube
+BOARD_robocube_QEMU_ARGS :=
+BOARD_robocube_CONSOLE  := DUART B
 # Virtual time from the instruction count alone: 2^8 ns = 256 ns per
 # instruction (4.3 clocks at 16.78 MHz, an assumed CPU32 average, not measured),
 # so the PIT, the DUART timer and the program advance in a fixed ratio. With
@@ -39,54 +38,7 @@ CROSS_AR     ?= m68k-linux-gnu-ar
 # clock, so a loaded host stretched them (a late warp lands past the next
 # deadline) and a minor cycle could overrun only because the machine was busy.
 # Now a run gives the same output, tick for tick, on a loaded host as on an idle one.
-FW_ICOUNT    := shift=8,sleep=off
-
-# Startup, fault reporter, formatter, the board's console and PIT, bsched.c:
-# every firmware image links these (with or without the kernel).
-FW_BASE_SRCS := boards/robocube/start.S kernel/arch/cpu32/exceptions.c \
-                kernel/lib/kprintf.c kernel/lib/kstring.c \
-                boards/robocube/duart_console.c boards/robocube/pit.c bsched/bsched.c
-# The board interface of the images and the drivers (boards/include/:
-# board.h, board_led.h, board_ports.h, board_radio.h) on this board, linked as a
-# library of every image (apps/apps.mk).
-FW_BOARD_LIB_SRCS := boards/robocube/board.c boards/robocube/led.c boards/robocube/ports.c \
-                     boards/robocube/radio.c boards/common/board_common.c
-# PDL reaches this board's ports through its drivers (the sampler, the uniform
-# access layer): linked with the PDL runtime (apps/apps.mk).
-FW_PDL_PORTS_SRCS := pdl/ports/drivers.c
-# The kernel's board interface (kernel/include/k_board.h) on this board: PIT
-# tick, interrupt-driven console; linked with the kernel (kernel/kernel.mk).
-BOARD_KERNEL_SRCS := boards/robocube/k_board_robocube.c
-FW_BASE_OBJS := $(patsubst %,$(FW_BUILD)/obj/%.o,$(FW_BASE_SRCS))
-
-FW_FAULT_KINDS := unmapped flashwrite illegal zerodivide
-FW_FAULT_ELFS  := $(patsubst %,$(FW_BUILD)/tests/fault-%.elf,$(FW_FAULT_KINDS))
-
-$(CPU32_RT) $(FW_LIBC_LIBS):
-	@$(SETUP) m68k
-
-$(FW_BUILD)/obj/%.c.o: %.c
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -c -o $@ $<
-
-$(FW_BUILD)/obj/%.S.o: %.S
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) $(FW_ASFLAGS) -c -o $@ $<
-
-# One image per fault kind; FAULT_KIND numbers follow kernel/tests/target/fault_image.c.
-fault_kind_index  = $(strip $(foreach i,1 2 3 4,$(if $(filter $(1),$(word $(i),$(FW_FAULT_KINDS))),$(i))))
-
-$(FW_BUILD)/tests/fault-%.o: kernel/tests/target/fault_image.c
-	@mkdir -p $(@D)
-	$(call quiet,CC,$<)$(CROSS_CC) $(FW_CFLAGS) -DFAULT_KIND=$(call fault_kind_index,$*) -c -o $@ $<
-
-$(FW_BUILD)/tests/fault-%.elf: $(FW_BUILD)/tests/fault-%.o $(FW_BASE_OBJS) $(FW_LDSCRIPT)
-	$(call quiet,LD,$@)$(CROSS_CC) $(FW_LDFLAGS) -o $@ $(FW_BASE_OBJS) $<
-
-.PRECIOUS: $(FW_BUILD)/tests/fault-%.o
-
-# Header dependencies from -MMD; the empty recipe stops make from looking for
-# implicit rules to remake them (fault-%.o would otherwise match fault-x.d.o).
-FW_DEPS := $(shell find $(FW_BUILD) -name '*.d' 2>/dev/null)
-$(FW_DEPS): ;
--include $(FW_DEPS)
+BOARD_robocube_ICOUNT   := shift=8,sleep=off
+# What it has (mk/image.mk lists every capability and what needs each).
+BOARD_robocube_CAPS     := console tick led ports libc posix radio i2c tpu analog bio motors world
+BOARD_robocube_BUILD    := $(BUILD)/firmware

@@ -2,15 +2,14 @@
  * The shared start-up of the firmware images (boards/include/board.h) and the
  * status LED (boards/include/board_led.h) on the STM32F405: the same interface
  * the RoboCube's boards/robocube/board.c and led.c give
- * (boards/common/board_common.c has what both share), so an image that uses only the kernel, the console
+ * (boards/common/board_common.c has what every board shares, board_armv7m.c what
+ * the ARMv7-M boards do), so an image that uses only the kernel, the console
  * (output and line input, drivers/console_in.h) and the LED builds for
- * either board.
+ * every board.
  */
 #include "boards/include/board.h"
 #include "boards/include/board_led.h"
 
-#include "k_board.h"
-#include "armv7m.h"
 #include "stm32f405.h"
 #include "boards/stm32f405/board_stm32f405.h"
 
@@ -47,36 +46,6 @@ bool led_is_on(void)
     return led_on;
 }
 
-void board_halt(const char *image, const char *why)
-{
-    board_say(image, why);
-    armv7m_halt();
-}
-
-/* ARM semihosting SYS_EXIT (ADP_Stopped_ApplicationExit): QEMU, started with
- * -semihosting-config enable=on (make run does), ends the emulation; a real
- * board without a debugger attached would fault on the BKPT, so it only
- * comes after the message, and the fault handler halts. */
-void board_power_off(const char *image, const char *why)
-{
-    board_say(image, why);
-    {
-        /* set after the call above, which is free to use r0 and r1 */
-        register uint32_t op __asm__("r0") = 0x18u;       /* SYS_EXIT */
-        register uint32_t arg __asm__("r1") = 0x20026u;   /* ADP_Stopped_ApplicationExit */
-        __asm__ __volatile__("bkpt 0xab" : : "r"(op), "r"(arg) : "memory");
-    }
-    armv7m_halt();
-}
-
-void board_start(const char *image)
-{
-    k_init();
-    led_init();
-    if (k_board_init() != 0)
-        board_halt(image, "k_board_init failed: no console interrupt or no SysTick rate for K_TICK_HZ\n");
-}
-
 int board_console_rx_start(board_console_rx_sink sink)
 {
     return sink == NULL ? -1 : stm32f405_console_rx_attach(sink);
@@ -85,26 +54,4 @@ int board_console_rx_start(board_console_rx_sink sink)
 void board_console_rx_resume(void)
 {
     stm32f405_console_rx_resume();
-}
-
-/* picolibc's stdio (printf, puts) writes through the kernel console, as
- * newlib's does on the RoboCube (drivers/libc_syscalls.c). */
-#include <stdio.h>
-#include <stdlib.h>
-
-static int board_stdio_putc(char c, FILE *f)
-{
-    (void)f;
-    return k_console_write(&c, 1u) == 1u ? (unsigned char)c : EOF;
-}
-static FILE board_stdio = FDEV_SETUP_STREAM(board_stdio_putc, NULL, NULL, _FDEV_SETUP_WRITE);
-FILE *const stdout = &board_stdio;
-FILE *const stderr = &board_stdio;
-FILE *const stdin = NULL;
-
-/* exit() and abort() end here: the board halts, as on the RoboCube. */
-void _exit(int status)
-{
-    k_printf("exit(%d): halted\n", status);
-    board_halt("main", "exit called\n");
 }

@@ -14,8 +14,6 @@
 /* The core clock the netduinoplus2 model runs at (and a real board after
  * the PLL set-up of ST's reference start-up): 168 MHz. */
 #define STM32F405_CPU_HZ 168000000u
-/* NVIC lines of the STM32F405 (RM0090 table 61: IRQ 0..81). */
-#define STM32F405_IRQ_LINES 82u
 
 /* RCC: clock enables (no effect in QEMU, needed on a real chip). */
 #define RCC_BASE     0x40023800u

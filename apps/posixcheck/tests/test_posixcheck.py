@@ -3,7 +3,9 @@ runs every test of the image; each of its "POSIX TEST" lines is one test
 here, so a failing call is named by its own test. The figures the image
 measures go to build/posix/figures.txt.
 
-Environment (make check-posix): BSCHED_QEMU, FW_DIR.
+Environment (make check-posix, make check-NAME-posix): BSCHED_QEMU, FW_DIR and
+K_BOARD, the board (robocube_emu.launch.BOARDS: its machine and -icount; the
+RoboCube by default).
 """
 import os
 import re
@@ -15,6 +17,12 @@ import robocube_emu
 ROOT = Path(__file__).resolve().parents[3]
 FW = Path(os.environ.get("FW_DIR", ROOT / "build" / "firmware"))
 ELF = FW / "posixcheck" / "posixcheck.elf"
+BOARD_NAME = os.environ.get("K_BOARD", "robocube")
+BOARD = robocube_emu.launch.board(BOARD_NAME)
+# The RoboCube's console is the first of its three serial ports; another
+# board has one, the console.
+MACHINE_ARGS = {} if BOARD_NAME == "robocube" else {
+    "machine": BOARD["machine"], "serial_names": ("console",), "qemu": os.environ.get("BSCHED_QEMU")}
 
 TESTS = [
     "threads_preempt_by_priority",
@@ -32,13 +40,13 @@ TESTS = [
 
 @pytest.fixture(scope="module")
 def console():
-    with robocube_emu.Machine(kernel=str(ELF), extra_args=["-icount", "shift=8,sleep=off"],
-                          timeout=60) as m:
+    with robocube_emu.Machine(kernel=str(ELF), extra_args=["-icount", BOARD["test_icount"]],
+                              timeout=60, **MACHINE_ARGS) as m:
         text = m.console.read_until(b"POSIX READY FOR INPUT\r\n", timeout=120).decode("latin-1")
         m.console.write(b"posix line\r")
         text += m.console.read_until(b"failed\r\n", timeout=60).decode("latin-1")
     figures = dict(re.findall(r"POSIX FIGURE (\S+) (-?\d+)", text))
-    out = ROOT / "build" / "posix" / "figures.txt"
+    out = ROOT / "build" / "posix" / ("figures.txt" if BOARD_NAME == "robocube" else f"figures-{BOARD_NAME}.txt")
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text("".join(f"{k} {v}\n" for k, v in sorted(figures.items())))
     return text

@@ -1,8 +1,8 @@
 """The firmware on the stm32f405 board (qemu-system-arm -M netduinoplus2):
 table1 in virtual time (its Table 2 through `make run`: apps/table1/tests), the
 shell through `make run`, the fault reports of the ARMv7-M
-port, PDL on the board's ports, and make run's refusals (an unknown board, an
-image that needs the RoboCube).
+port, PDL on the board's ports, and make's refusals (an unknown board, an
+image that needs what the board lacks, an image for another board).
 
 Environment (set by `make check-stm32f405-firmware`):
   STM32_BUILD    build/stm32f405 (images)
@@ -217,15 +217,25 @@ def test_make_run_refuses_an_unknown_board():
     assert "BOARD=pdp11: no such board" in lines[0] and "robocube|stm32f405" in lines[0]
 
 
-def test_image_that_needs_the_robocube_says_so():
-    """iotest drives the RoboCube's I/O board: built for stm32f405 it stops
-    before compiling anything, naming the RoboCube headers it needs."""
+def test_image_that_needs_what_the_board_lacks_says_so():
+    """netnode needs the radio channel this board lacks: make stops before
+    compiling anything, in one line naming the board and what it lacks."""
+    r = make("firmware", "BOARD=stm32f405", "APP=netnode")
+    assert r.returncode == 2
+    lines = [line for line in r.stderr.splitlines() if line.strip()]
+    assert len(lines) == 1, r.stderr
+    assert "APP=netnode needs radio: BOARD=stm32f405 lacks it" in lines[0], lines[0]
+    assert not (BUILD / "netnode").exists()
+
+
+def test_image_for_another_board_says_so():
+    """iotest is the RoboCube's I/O board test (its DUART's internals): make
+    stops in one line naming the boards it is for."""
     r = make("firmware", "BOARD=stm32f405", "APP=iotest")
     assert r.returncode == 2
     lines = [line for line in r.stderr.splitlines() if line.strip()]
     assert len(lines) == 1, r.stderr
-    assert "APP=iotest needs the RoboCube's hardware (" in lines[0]
-    assert "drivers/" in lines[0] and "BOARD=robocube only" in lines[0]
+    assert "APP=iotest is for BOARD=robocube only" in lines[0], lines[0]
     assert not (BUILD / "iotest").exists()
 
 
@@ -247,7 +257,7 @@ def test_pdl_program_with_the_boards_ports():
 
 
 def test_pdl_hello_as_an_ordinary_program():
-    """apps/pdl_hello unchanged (printf through picolibc, main as a thread)."""
+    """apps/pdl_hello unchanged (printf through newlib, main as a thread)."""
     with boot(BUILD / "pdl_hello" / "pdl_hello.elf") as m:
         text = m.console.read_until(b"t=3 s", 20.0)
         text += m.console.read_until(b"\n", 5.0)

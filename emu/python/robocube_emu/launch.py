@@ -58,7 +58,8 @@ def popen(args=(), kernel=None, icount=ICOUNT, qemu=None, stdin=subprocess.DEVNU
 # and the traces use, the binutils prefix, and the first instruction of the
 # tick interrupt (where a tick span starts), and whether the kernel's port
 # guards stacks with an MPU (a thread stopped at its first write into its
-# guard, not at its next switch). The stm32f405's suites run its
+# guard, not at its next switch). The mps2-an385's suites run at make run's
+# setting (64 ns per instruction). The stm32f405's suites run its
 # virtual CPU at 64 ns per instruction instead of make run's 8: what they check
 # is counted in ticks and instructions, never in instructions per tick, and
 # eight times fewer instructions per tick make the long tests eight times
@@ -71,6 +72,10 @@ BOARDS = {
                   "test_icount": "shift=6,sleep=off",
                   "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick",
                   "mpu_stack_guard": True},
+    "mps2-an385": {"machine": "mps2-an385", "icount": "shift=6,sleep=off",
+                   "test_icount": "shift=6,sleep=off",
+                   "cross": "arm-none-eabi-", "tick_entry": "armv7m_systick",
+                   "mpu_stack_guard": True},
 }
 
 

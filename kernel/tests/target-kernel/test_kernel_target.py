@@ -11,9 +11,10 @@ Environment (set by `make check-kernel-target`):
   BSCHED_QEMU    qemu-system-m68k with the robocube machine
   K_TARGET_DIR   build/kernel/target
   CROSS_PREFIX   m68k-linux-gnu-
-  K_BOARD        robocube (default) or stm32f405: the same images built for
-                 the ARMv7-M port run on qemu-system-arm -M netduinoplus2
-                 (make check-stm32f405-kernel; kmeasure.BOARDS)
+  K_BOARD        robocube (default) or another board of
+                 robocube_emu.launch.BOARDS: the same images built for it, on
+                 its machine (make check-NAME-kernel: stm32f405 on
+                 qemu-system-arm -M netduinoplus2, mps2-an385 on -M mps2-an385)
 """
 import os
 import re
