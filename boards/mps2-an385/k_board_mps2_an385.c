@@ -166,5 +166,10 @@ int k_board_init(void)
         k_irq_register(ARMV7M_IRQ_VECTOR(UART0_RX_IRQ), CONSOLE_LEVEL, k_console_isr, NULL) != K_OK)
         return -1;
     k_console_register(mps2_console_write, mps2_console_write_sync);
-    return armv7m_systick_start(MPS2_AN385_CPU_HZ, K_TICK_HZ, k_board_tick);
+    if (armv7m_systick_start(MPS2_AN385_CPU_HZ, K_TICK_HZ, k_board_tick) != 0)
+        return -1;
+    /* The kernel's fine time stamp: processor clocks counted through SysTick
+     * (QEMU models no DWT cycle counter), as on the STM32F405. */
+    k_timestamp_register(armv7m_systick_cycles, MPS2_AN385_CPU_HZ, NULL);
+    return 0;
 }

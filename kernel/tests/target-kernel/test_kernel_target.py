@@ -33,7 +33,7 @@ MACHINE = kmeasure.BOARD["machine"]
 TIME_LIMIT = 60.0  # wall seconds per image
 # The fine counter each board registers (k_timestamp_register): the RoboCube's
 # TCR1 at fsys/16, the STM32F405's processor clock through SysTick.
-TIMESTAMP_HZ = {"robocube": 1_048_576, "netduinoplus2": 168_000_000}
+TIMESTAMP_HZ = {"robocube": 1_048_576, "netduinoplus2": 168_000_000, "mps2-an385": 25_000_000}
 
 
 def run_image(mode, limit, extra=()):
