@@ -73,7 +73,7 @@ check-net-xdr-widths:
 	    else f=$$((f + 1)); echo "$$t: FAILED (exit $$r)"; fi; \
 	done; $(call record,net-xdr-widths,$$p,$$f); [ $$f -eq 0 ]
 
-NETNODE_ELF := $(call app_elf,netnode)
+NETNODE_ELF = $(call app_elf,netnode)
 
 # The XDR sample tool the Python comparison (test_xdr_python.py) runs.
 $(NET_BUILD)/tests/xdr_sample: net/tests/xdr_sample.c net/tests/xdr_sample.h net/xdr.c net/xdr.h

@@ -12,7 +12,7 @@ pdl_demo_WORLD := default
 # suite for the three, as they share its test helpers (pdl_measure.py).
 CHECKS += pdl-target
 EMU_CHECKS += pdl-target
-PDL_TARGET_ELFS := $(call app_elf,pdl_demo) $(call app_elf,pdl_bench) $(call app_elf,pdl_types)
+PDL_TARGET_ELFS = $(call app_elf,pdl_demo) $(call app_elf,pdl_bench) $(call app_elf,pdl_types)
 .PHONY: check-pdl-target
 check-pdl-target:
 	@$(SETUP) base m68k qemu
